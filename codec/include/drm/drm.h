@@ -1,0 +1,137 @@
+// drm: distance-ranked connectivity compression of triangle meshes.
+//
+// The public API of the codec library. It is C++14-clean (MeshLab 2020.09
+// plugins are built as gnu++14) and holds no I/O: meshes and byte buffers in,
+// meshes and byte buffers out. Errors are thrown as drm::Error with a message
+// that names the element, option or byte offset at fault.
+//
+// Method: P. Marais, J. Gain, D. Shreiner, "Distance-Ranked Connectivity
+// Compression of Triangle Meshes" (the quantized vertex set is coded first;
+// connectivity is the stream of distance ranks of each new triangle's apex).
+#ifndef DRM_DRM_H
+#define DRM_DRM_H
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace drm {
+
+// Thrown by every function of the library on bad input, corrupt data or a
+// cancelled operation. what() is a complete sentence for the user.
+class Error : public std::runtime_error {
+public:
+    explicit Error(const std::string& message) : std::runtime_error(message) {}
+};
+
+// An indexed triangle mesh: xyz per vertex, three vertex indices per face.
+// Faces are oriented: (a, b, c) and (a, c, b) are different triangles.
+struct Mesh {
+    std::vector<float> positions;     // 3 * vertexCount()
+    std::vector<uint32_t> triangles;  // 3 * faceCount()
+
+    size_t vertexCount() const { return positions.size() / 3; }
+    size_t faceCount() const { return triangles.size() / 3; }
+};
+
+// Which apex predictor the traversal uses (paper, Section 3.2).
+enum class Predictor : uint8_t {
+    Auto = 0,           // chosen per mesh by the paper's counters
+    Parallelogram = 1,
+    Midpoint = 2,
+};
+
+const char* predictorName(Predictor p);
+// Parses "auto", "parallelogram", "midpoint"; throws Error otherwise.
+Predictor parsePredictor(const std::string& name);
+
+// Progress callback: fraction of the work done in [0, 1], and a short label
+// of the current stage. Return false to cancel (the call then throws Error).
+using Progress = std::function<bool(double fraction, const char* stage)>;
+
+struct EncodeOptions {
+    int bits = 12;                          // quantization bits per axis, 1..21
+    Predictor predictor = Predictor::Auto;
+    bool curvature = false;                 // the paper's curvature correction
+    Progress progress;                      // may be empty
+};
+
+// What a .drm file holds, measured. Byte counts are exact sizes of the file's
+// parts: connectivityBytes is the rank stream alone (as the paper counts it),
+// totalBytes the whole file.
+struct Stats {
+    uint64_t vertices = 0;
+    uint64_t faces = 0;
+    uint64_t components = 0;       // start triangles (edge-connected pieces)
+    uint64_t boundaryEdges = 0;    // rank-0 codes
+    int bits = 0;
+    Predictor predictor = Predictor::Midpoint;  // the one used (never Auto)
+    bool curvature = false;
+    uint64_t headerBytes = 0;
+    uint64_t connectivityBytes = 0;
+    uint64_t geometryBytes = 0;
+    uint64_t totalBytes = 0;
+    // rankHistogram[r] = number of rank codes equal to r (r = 0: boundary edge).
+    std::vector<uint64_t> rankHistogram;
+
+    double connectivityBitsPerVertex() const;
+    double geometryBitsPerVertex() const;
+    double totalBitsPerVertex() const;
+};
+
+// Quantization grid: grid coordinate q of axis k stands for
+// origin[k] + q * step. One cubic step over the bounding box:
+// step = largest extent / (2^bits - 1).
+struct Grid {
+    double origin[3] = {0, 0, 0};
+    double step = 1;
+    int bits = 12;
+};
+
+struct Encoded {
+    std::vector<uint8_t> bytes;      // the .drm file
+    Stats stats;
+    Grid grid;
+    // Quantized input positions (3 per vertex, input vertex order).
+    std::vector<int32_t> quantized;
+    // decodedVertex[i] = input vertex index of decoded vertex i.
+    std::vector<uint32_t> vertexOrder;
+    // For each input face, the rank code that created it (>= 1), or 0 for a
+    // component's start triangle, which is stored in the header, not ranked.
+    std::vector<uint32_t> faceRank;
+};
+
+struct Decoded {
+    Mesh mesh;                       // dequantized positions, decoded faces
+    std::vector<int32_t> quantized;  // grid coordinates, 3 per vertex
+    Grid grid;
+    Stats stats;
+};
+
+// Encodes a mesh. Throws Error when the mesh cannot be represented (empty,
+// NaN or infinite coordinates, index out of range, repeated index in a face,
+// non-manifold edge or vertex, inconsistent orientation), naming the first
+// offending element, or when options are out of range.
+Encoded encode(const Mesh& mesh, const EncodeOptions& options = EncodeOptions());
+
+// Decodes a .drm buffer. Throws Error naming what is wrong (and where) for
+// truncated, corrupt or foreign data; never crashes or reads out of bounds.
+Decoded decode(const uint8_t* data, size_t size, const Progress& progress = Progress());
+inline Decoded decode(const std::vector<uint8_t>& bytes, const Progress& progress = Progress()) {
+    return decode(bytes.data(), bytes.size(), progress);
+}
+
+// Quantizes positions onto the grid encode() would use for these options.
+// Throws Error on empty input or non-finite coordinates.
+Grid makeGrid(const std::vector<float>& positions, int bits);
+std::vector<int32_t> quantize(const std::vector<float>& positions, const Grid& grid);
+
+// The library's version string, e.g. "0.1.0".
+const char* version();
+
+}  // namespace drm
+
+#endif  // DRM_DRM_H

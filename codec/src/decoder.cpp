@@ -1,0 +1,100 @@
+// Decoder (paper, Table 2): read the vertex set, then replay the traversal,
+// turning each rank back into the vertex that closes the triangle.
+#include <algorithm>
+#include <string>
+
+#include "file_format.h"
+#include "geometry_raw.h"
+#include "predictor.h"
+#include "progress.h"
+#include "quantize.h"
+#include "rank_coder.h"
+#include "rank_search.h"
+#include "traversal.h"
+#include "vertex_index.h"
+
+namespace drm {
+
+Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallback) {
+    ProgressReporter progress(progressCallback);
+    progress.stage("reading", 0.0);
+    const FileParts parts = readFile(data, size);
+    const FileHeader& header = parts.header;
+
+    Decoded result;
+    result.grid = header.grid;
+    result.quantized = unpackGrid(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits);
+
+    const size_t vertexCount = size_t(header.vertexCount);
+    const size_t faceCount = size_t(header.faceCount);
+    // The face count is not trusted for allocation beyond what the vertex
+    // count makes plausible; tables grow if a real mesh needs more.
+    const size_t expectedFaces = std::min<size_t>(faceCount, 4 * vertexCount + 16);
+    VertexIndex candidates(result.quantized);
+    Traversal traversal(vertexCount, expectedFaces, &candidates);
+    ApexPredictor predict(header.predictor, header.curvature, result.quantized, candidates, traversal);
+    RankSearch ranks(result.quantized, header.grid.bits, candidates, traversal);
+    RankDecoder coder(parts.connectivity, parts.connectivitySize);
+    Stats& stats = result.stats;
+
+    progress.stage("decoding connectivity", 0.05);
+    const size_t components = header.startTriangles.size() / 3;
+    for (size_t c = 0; c < components; ++c) {
+        const uint32_t* start = &header.startTriangles[3 * c];
+        if (traversal.triangleCount() >= faceCount)
+            throw Error("corrupt file: more components than the header's " + std::to_string(faceCount) + " faces");
+        try {
+            traversal.startComponent(start[0], start[1], start[2]);
+        } catch (const Error& e) {
+            throw Error("corrupt file: component " + std::to_string(c) + ": " + e.what());
+        }
+        OpenEdge edge;
+        while (traversal.popOpenEdge(edge)) {
+            const uint32_t rank = coder.get();
+            if (coder.bytesPastEnd() > 8)
+                throw Error("corrupt file: the connectivity section ends before the last face");
+            if (rank >= stats.rankHistogram.size()) {
+                if (rank > vertexCount) throw Error("corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
+                stats.rankHistogram.resize(size_t(rank) + 1, 0);
+            }
+            ++stats.rankHistogram[rank];
+            if (rank == 0) {
+                traversal.closeAsBoundary(edge);
+                continue;
+            }
+            if (traversal.triangleCount() >= faceCount)
+                throw Error("corrupt file: the connectivity section describes more than the header's " +
+                            std::to_string(faceCount) + " faces");
+            try {
+                traversal.attachApex(edge, ranks.vertexOfRank(predict.predict(edge), rank, edge));
+            } catch (const Error& e) {
+                throw Error("corrupt file: face " + std::to_string(traversal.triangleCount()) + ": " + e.what());
+            }
+            progress.tick(0.05 + 0.9 * double(traversal.triangleCount()) / double(faceCount));
+        }
+    }
+    if (traversal.triangleCount() != faceCount)
+        throw Error("corrupt file: decoded " + std::to_string(traversal.triangleCount()) + " faces, the header says " +
+                    std::to_string(faceCount));
+
+    result.mesh.triangles = traversal.triangles();
+    result.mesh.positions.resize(result.quantized.size());
+    for (size_t i = 0; i < result.quantized.size(); ++i)
+        result.mesh.positions[i] = float(header.grid.origin[i % 3] + double(result.quantized[i]) * header.grid.step);
+
+    stats.vertices = vertexCount;
+    stats.faces = faceCount;
+    stats.components = components;
+    stats.boundaryEdges = stats.rankHistogram.empty() ? 0 : stats.rankHistogram[0];
+    stats.bits = header.grid.bits;
+    stats.predictor = header.predictor;
+    stats.curvature = header.curvature;
+    stats.headerBytes = parts.headerBytes;
+    stats.connectivityBytes = parts.connectivitySize;
+    stats.geometryBytes = parts.geometrySize;
+    stats.totalBytes = size;
+    progress.stage("done", 1.0);
+    return result;
+}
+
+}  // namespace drm

@@ -1,0 +1,108 @@
+// Encoder (paper, Table 1): quantize, check, choose the predictor, then walk
+// the shared traversal with the true apex of every open edge and code its
+// distance rank.
+#include <string>
+
+#include "file_format.h"
+#include "geometry_raw.h"
+#include "mesh_check.h"
+#include "predictor.h"
+#include "predictor_selection.h"
+#include "progress.h"
+#include "quantize.h"
+#include "rank_coder.h"
+#include "rank_search.h"
+#include "traversal.h"
+#include "vertex_index.h"
+
+namespace drm {
+
+Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
+    ProgressReporter progress(options.progress);
+    Encoded result;
+    result.grid = makeGrid(mesh.positions, options.bits);  // checks bits, emptiness, finiteness
+    result.quantized = quantize(mesh.positions, result.grid);
+    progress.stage("checking mesh", 0.0);
+    const MeshTopology topology = checkMesh(mesh);
+
+    Predictor predictor = options.predictor;
+    if (predictor == Predictor::Auto) {
+        progress.stage("choosing predictor", 0.02);
+        predictor = countPredictorVotes(mesh, topology, result.quantized).winner();
+    }
+
+    const std::vector<uint32_t>& t = mesh.triangles;
+    const size_t faceCount = mesh.faceCount();
+    VertexIndex candidates(result.quantized);
+    Traversal traversal(mesh.vertexCount(), faceCount, &candidates);
+    ApexPredictor predict(predictor, options.curvature, result.quantized, candidates, traversal);
+    RankSearch ranks(result.quantized, options.bits, candidates, traversal);
+    RankEncoder coder;
+
+    FileHeader header;
+    header.vertexCount = mesh.vertexCount();
+    header.faceCount = faceCount;
+    header.grid = result.grid;
+    header.predictor = predictor;
+    header.curvature = options.curvature;
+    Stats& stats = result.stats;
+
+    result.faceRank.assign(faceCount, 0);
+    std::vector<uint8_t> attached(faceCount, 0);
+    size_t attachedCount = 0;
+    progress.stage("ranking", 0.05);
+    for (size_t f = 0; f < faceCount; ++f) {
+        if (attached[f]) continue;
+        // One start triangle per edge-connected component: the first face,
+        // in input order, that no earlier component reached.
+        attached[f] = 1;
+        ++attachedCount;
+        traversal.startComponent(t[3 * f], t[3 * f + 1], t[3 * f + 2]);
+        header.startTriangles.insert(header.startTriangles.end(), {t[3 * f], t[3 * f + 1], t[3 * f + 2]});
+        OpenEdge edge;
+        while (traversal.popOpenEdge(edge)) {
+            uint32_t face = 0;
+            const uint32_t apex = topology.apexAcross(edge.vi, edge.vj, &face);
+            uint32_t rank = 0;
+            if (apex == HalfEdgeMap::kAbsent) {
+                traversal.closeAsBoundary(edge);
+            } else {
+                if (traversal.isCulled(apex))
+                    throw Error("internal error: the apex of face " + std::to_string(face) + " was culled too early");
+                rank = ranks.rankOf(predict.predict(edge), apex, edge);
+                traversal.attachApex(edge, apex);
+                attached[face] = 1;
+                result.faceRank[face] = rank;
+                ++attachedCount;
+            }
+            coder.put(rank);
+            if (rank >= stats.rankHistogram.size()) stats.rankHistogram.resize(size_t(rank) + 1, 0);
+            ++stats.rankHistogram[rank];
+            progress.tick(0.05 + 0.9 * double(attachedCount) / double(faceCount));
+        }
+    }
+
+    progress.stage("writing", 0.95);
+    const std::vector<uint8_t> connectivity = coder.finish();
+    const std::vector<uint8_t> geometry = packGrid(result.quantized, options.bits);
+    size_t headerBytes = 0;
+    result.bytes = writeFile(header, connectivity, geometry, &headerBytes);
+    result.vertexOrder.resize(mesh.vertexCount());
+    for (size_t v = 0; v < result.vertexOrder.size(); ++v) result.vertexOrder[v] = uint32_t(v);
+
+    stats.vertices = mesh.vertexCount();
+    stats.faces = faceCount;
+    stats.components = header.startTriangles.size() / 3;
+    stats.boundaryEdges = stats.rankHistogram.empty() ? 0 : stats.rankHistogram[0];
+    stats.bits = options.bits;
+    stats.predictor = predictor;
+    stats.curvature = options.curvature;
+    stats.headerBytes = headerBytes;
+    stats.connectivityBytes = connectivity.size();
+    stats.geometryBytes = geometry.size();
+    stats.totalBytes = result.bytes.size();
+    progress.stage("done", 1.0);
+    return result;
+}
+
+}  // namespace drm

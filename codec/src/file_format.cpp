@@ -1,0 +1,128 @@
+#include "file_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "container.h"
+#include "crc32.h"
+#include "quantize.h"
+
+namespace drm {
+namespace {
+
+const char* const kSectionNames[3] = {"header", "connectivity", "geometry"};
+
+void writeSection(ByteWriter& out, const std::vector<uint8_t>& payload) {
+    out.varint(payload.size());
+    out.u32(crc32(payload.data(), payload.size()));
+    out.bytes(payload);
+}
+
+std::vector<uint8_t> encodeHeader(const FileHeader& h) {
+    ByteWriter out;
+    out.u16(h.curvature ? kFlagCurvature : 0);
+    out.u8(uint8_t(h.grid.bits));
+    out.u8(uint8_t(h.predictor));
+    out.u8(uint8_t(h.connectivityCoder));
+    out.u8(uint8_t(h.geometryCoder));
+    for (double o : h.grid.origin) out.f64(o);
+    out.f64(h.grid.step);
+    out.varint(h.vertexCount);
+    out.varint(h.faceCount);
+    out.varint(h.startTriangles.size() / 3);
+    for (uint32_t v : h.startTriangles) out.varint(v);
+    return std::move(out.buffer());
+}
+
+FileHeader decodeHeader(ByteReader& in) {
+    FileHeader h;
+    const uint16_t flags = in.u16("flags");
+    if (flags & ~kFlagCurvature) throw Error("corrupt file: unknown header flags " + std::to_string(flags));
+    h.curvature = (flags & kFlagCurvature) != 0;
+    h.grid.bits = in.u8("quantization bits");
+    if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
+        throw Error("corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");
+    const uint8_t predictor = in.u8("predictor");
+    if (predictor != uint8_t(Predictor::Parallelogram) && predictor != uint8_t(Predictor::Midpoint))
+        throw Error("corrupt file: unknown predictor " + std::to_string(predictor));
+    h.predictor = Predictor(predictor);
+    const uint8_t connectivity = in.u8("connectivity coder");
+    if (connectivity != uint8_t(ConnectivityCoder::RankRangeCoder))
+        throw Error("unsupported file: unknown connectivity coder " + std::to_string(connectivity));
+    const uint8_t geometry = in.u8("geometry coder");
+    if (geometry != uint8_t(GeometryCoder::RawGrid))
+        throw Error("unsupported file: unknown geometry coder " + std::to_string(geometry));
+    for (double& o : h.grid.origin) o = in.f64("bounding box origin");
+    h.grid.step = in.f64("grid step");
+    for (double o : h.grid.origin)
+        if (!std::isfinite(o)) throw Error("corrupt file: the bounding box origin is not finite");
+    if (!std::isfinite(h.grid.step) || !(h.grid.step > 0))
+        throw Error("corrupt file: the grid step is not a positive number");
+    h.vertexCount = in.count("vertex count", 0xFFFFFFFEull);
+    if (h.vertexCount == 0) throw Error("corrupt file: the vertex count is zero");
+    h.faceCount = in.count("face count", 0x55555554ull);
+    // Every start vertex takes at least one byte: the count is bounded by
+    // what is left before anything is allocated.
+    const uint64_t components = in.count("component count", std::min<uint64_t>(h.faceCount, in.remaining() / 3));
+    h.startTriangles.resize(size_t(components) * 3);
+    for (uint32_t& v : h.startTriangles) v = uint32_t(in.count("start triangle vertex", h.vertexCount - 1));
+    if (in.remaining() != 0)
+        throw Error("corrupt file: " + std::to_string(in.remaining()) + " unexpected bytes at the end of the header");
+    return h;
+}
+
+}  // namespace
+
+std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
+                               const std::vector<uint8_t>& geometry, size_t* headerBytes) {
+    ByteWriter out;
+    out.bytes(kSignature, sizeof kSignature);
+    out.u16(kFormatVersion);
+    writeSection(out, encodeHeader(header));
+    writeSection(out, connectivity);
+    writeSection(out, geometry);
+    if (headerBytes) *headerBytes = out.size() - connectivity.size() - geometry.size();
+    return std::move(out.buffer());
+}
+
+FileParts readFile(const uint8_t* data, size_t size) {
+    if (size == 0) throw Error("empty file: not a .drm file");
+    if (size < sizeof kSignature || std::memcmp(data, kSignature, sizeof kSignature) != 0)
+        throw Error("not a .drm file: the signature is missing");
+    ByteReader file(data, size, "file");
+    file.bytes(sizeof kSignature, "signature");
+    const uint16_t version = file.u16("format version");
+    if (version != kFormatVersion)
+        throw Error("unsupported .drm format version " + std::to_string(version) + ": this reader knows version " +
+                    std::to_string(kFormatVersion));
+
+    const uint8_t* payload[3];
+    size_t payloadSize[3];
+    for (int s = 0; s < 3; ++s) {
+        const std::string name = kSectionNames[s];
+        payloadSize[s] = size_t(file.count((name + " section length").c_str(), file.remaining()));
+        const uint32_t stored = file.u32((name + " section checksum").c_str());
+        const size_t offset = file.offset();
+        payload[s] = file.bytes(payloadSize[s], (name + " section").c_str());
+        const uint32_t actual = crc32(payload[s], payloadSize[s]);
+        if (actual != stored)
+            throw Error("corrupt file: the " + name + " section (offset " + std::to_string(offset) +
+                        ") fails its checksum");
+    }
+    if (file.remaining() != 0)
+        throw Error("corrupt file: " + std::to_string(file.remaining()) + " unexpected bytes after the last section");
+
+    FileParts parts;
+    ByteReader header(payload[0], payloadSize[0], "header", size_t(payload[0] - data));
+    parts.header = decodeHeader(header);
+    parts.connectivity = payload[1];
+    parts.connectivitySize = payloadSize[1];
+    parts.geometry = payload[2];
+    parts.geometrySize = payloadSize[2];
+    parts.headerBytes = size - payloadSize[1] - payloadSize[2];
+    return parts;
+}
+
+}  // namespace drm

@@ -1,0 +1,51 @@
+// The .drm container: signature, version, then three sections (header,
+// connectivity, geometry), each with its length and CRC-32. docs/format.md is
+// the byte-level specification; keep the two in step.
+#ifndef DRM_FILE_FORMAT_H
+#define DRM_FILE_FORMAT_H
+
+#include <cstdint>
+#include <vector>
+
+#include "drm/drm.h"
+
+namespace drm {
+
+constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
+constexpr uint16_t kFormatVersion = 1;
+
+enum class ConnectivityCoder : uint8_t { RankRangeCoder = 1 };
+enum class GeometryCoder : uint8_t { RawGrid = 1 };
+
+constexpr uint16_t kFlagCurvature = 1;
+
+struct FileHeader {
+    uint64_t vertexCount = 0;
+    uint64_t faceCount = 0;
+    Grid grid;
+    Predictor predictor = Predictor::Midpoint;
+    bool curvature = false;
+    ConnectivityCoder connectivityCoder = ConnectivityCoder::RankRangeCoder;
+    GeometryCoder geometryCoder = GeometryCoder::RawGrid;
+    std::vector<uint32_t> startTriangles;  // 3 vertex indices per component
+};
+
+struct FileParts {
+    FileHeader header;
+    const uint8_t* connectivity = nullptr;
+    size_t connectivitySize = 0;
+    const uint8_t* geometry = nullptr;
+    size_t geometrySize = 0;
+    size_t headerBytes = 0;  // everything but the two payloads
+};
+
+std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
+                               const std::vector<uint8_t>& geometry, size_t* headerBytes);
+
+// Checks signature, version, section lengths and checksums, and every header
+// field's range; the payloads are returned as pointers into data.
+FileParts readFile(const uint8_t* data, size_t size);
+
+}  // namespace drm
+
+#endif  // DRM_FILE_FORMAT_H

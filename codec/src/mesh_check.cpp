@@ -1,0 +1,94 @@
+#include "mesh_check.h"
+
+#include <numeric>
+#include <string>
+
+namespace drm {
+namespace {
+
+std::string faceText(const std::vector<uint32_t>& t, size_t f) {
+    return "face " + std::to_string(f) + " (" + std::to_string(t[3 * f]) + ", " + std::to_string(t[3 * f + 1]) +
+           ", " + std::to_string(t[3 * f + 2]) + ")";
+}
+
+// Union-find over face corners, to count the fans around each vertex.
+struct CornerSets {
+    std::vector<uint32_t> parent;
+    explicit CornerSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    uint32_t root(uint32_t c) {
+        while (parent[c] != c) c = parent[c] = parent[parent[c]];
+        return c;
+    }
+    void join(uint32_t a, uint32_t b) { parent[root(a)] = root(b); }
+};
+
+}  // namespace
+
+uint32_t MeshTopology::apexAcross(uint32_t a, uint32_t b, uint32_t* face) const {
+    const uint32_t g = faceOfHalfEdge.find(b, a);
+    if (face) *face = g;
+    if (g == HalfEdgeMap::kAbsent) return HalfEdgeMap::kAbsent;
+    const uint32_t* t = triangles->data() + 3 * size_t(g);
+    for (int k = 0; k < 3; ++k)
+        if (t[k] == b) return t[(k + 2) % 3];
+    return HalfEdgeMap::kAbsent;  // unreachable for a table built by checkMesh
+}
+
+MeshTopology checkMesh(const Mesh& mesh) {
+    const std::vector<uint32_t>& t = mesh.triangles;
+    const size_t vertexCount = mesh.vertexCount();
+    const size_t faceCount = mesh.faceCount();
+    if (t.size() % 3 != 0) throw Error("the triangle array does not hold whole index triples");
+    if (vertexCount >= 0xFFFFFFFFu || faceCount >= 0x55555555u)
+        throw Error("the mesh is too large: at most 2^32-2 vertices and 1431655764 faces are supported");
+
+    for (size_t f = 0; f < faceCount; ++f) {
+        for (int k = 0; k < 3; ++k)
+            if (t[3 * f + k] >= vertexCount)
+                throw Error(faceText(t, f) + " refers to vertex " + std::to_string(t[3 * f + k]) +
+                            ", but the mesh has only " + std::to_string(vertexCount) + " vertices");
+        if (t[3 * f] == t[3 * f + 1] || t[3 * f + 1] == t[3 * f + 2] || t[3 * f] == t[3 * f + 2])
+            throw Error(faceText(t, f) + " repeats a vertex index; such degenerate faces are not supported");
+    }
+
+    MeshTopology topology;
+    topology.triangles = &t;
+    topology.faceOfHalfEdge.reset(t.size());
+    for (size_t f = 0; f < faceCount; ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = t[3 * f + k], b = t[3 * f + (k + 1) % 3];
+            if (!topology.faceOfHalfEdge.insert(a, b, uint32_t(f))) {
+                const uint32_t g = topology.faceOfHalfEdge.find(a, b);
+                throw Error(faceText(t, f) + " and " + faceText(t, g) + " both contain the directed edge " +
+                            std::to_string(a) + "->" + std::to_string(b) +
+                            ": the mesh is non-manifold or inconsistently oriented there");
+            }
+        }
+    }
+
+    // Corners (f, k) around one vertex are joined when their faces share an
+    // edge at that vertex; a vertex whose corners fall into two or more sets
+    // is the apex of two fans (a "bowtie"), which the traversal cannot handle.
+    CornerSets sets(t.size());
+    for (size_t f = 0; f < faceCount; ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = t[3 * f + k], next = t[3 * f + (k + 1) % 3];
+            const uint32_t g = topology.faceOfHalfEdge.find(next, v);
+            if (g == HalfEdgeMap::kAbsent) continue;
+            for (int j = 0; j < 3; ++j)
+                if (t[3 * size_t(g) + j] == v) sets.join(uint32_t(3 * f + k), uint32_t(3 * size_t(g) + j));
+        }
+    }
+    std::vector<uint32_t> fanOf(vertexCount, HalfEdgeMap::kAbsent);
+    for (size_t c = 0; c < t.size(); ++c) {
+        const uint32_t v = t[c], fan = sets.root(uint32_t(c));
+        if (fanOf[v] == HalfEdgeMap::kAbsent) fanOf[v] = fan;
+        else if (fanOf[v] != fan)
+            throw Error("vertex " + std::to_string(v) +
+                        " is non-manifold: its faces form more than one fan (first seen at " + faceText(t, c / 3) +
+                        ")");
+    }
+    return topology;
+}
+
+}  // namespace drm

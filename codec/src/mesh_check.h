@@ -1,0 +1,29 @@
+// Checks that an input mesh is one the method can represent, and builds the
+// directed-edge table the encoder uses to find the true apex across an edge.
+#ifndef DRM_MESH_CHECK_H
+#define DRM_MESH_CHECK_H
+
+#include "drm/drm.h"
+#include "halfedge_map.h"
+
+namespace drm {
+
+struct MeshTopology {
+    const std::vector<uint32_t>* triangles = nullptr;
+    HalfEdgeMap faceOfHalfEdge;  // directed edge (a, b) -> the face that holds it
+
+    // The vertex c such that (b, a, c) is a face, i.e. the apex of the
+    // triangle on the other side of the directed edge (a, b); kAbsent on a
+    // boundary. *face receives that face's index.
+    uint32_t apexAcross(uint32_t a, uint32_t b, uint32_t* face) const;
+};
+
+// Throws Error naming the first offending element if the mesh has an index
+// out of range, a face repeating a vertex, a directed edge used twice (a
+// non-manifold edge or neighbours with opposite orientation) or a vertex whose
+// faces form more than one fan (a non-manifold vertex).
+MeshTopology checkMesh(const Mesh& mesh);
+
+}  // namespace drm
+
+#endif  // DRM_MESH_CHECK_H

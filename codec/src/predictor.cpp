@@ -1,0 +1,122 @@
+#include "predictor.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "admissibility.h"
+#include "quantize.h"
+#include "vertex_index.h"
+
+namespace drm {
+
+Vec3 parallelogramApex(Vec3 a, Vec3 b, Vec3 o) { return a + b - o; }
+
+Vec3 midpointApex(Vec3 a, Vec3 b, Vec3 o) {
+    const Vec3 e = b - a;
+    const double edgeLength2 = norm2(e);
+    const Vec3 mid = (a + b) * 0.5;
+    const Vec3 away = rejectFrom(mid - o, e);  // in the triangle's plane, away from o
+    const double awayLength = norm(away);
+    if (edgeLength2 == 0 || awayLength == 0) return mid;  // degenerate triangle: no direction
+    // Equilateral height ahead of the edge...
+    const double height = 0.8660254037844386 * std::sqrt(edgeLength2);
+    Vec3 apex = mid + away * (height / awayLength);
+    // ...shifted slightly along the edge the way the rebuilt triangle leans,
+    // so that on quad-like grids the two equidistant vertices do not tie
+    // (the paper's skew bias; 0.05 of the opposite vertex's offset measured
+    // best, method notes).
+    const double lean = dot(mid - o, e) / edgeLength2;
+    apex = apex + e * (0.05 * lean);
+    return apex;
+}
+
+Vec3 baseApex(Predictor kind, Vec3 a, Vec3 b, Vec3 o) {
+    return kind == Predictor::Parallelogram ? parallelogramApex(a, b, o) : midpointApex(a, b, o);
+}
+
+ApexPredictor::ApexPredictor(Predictor kind, bool curvature, const std::vector<int32_t>& grid,
+                             const VertexIndex& candidates, const Traversal& traversal, PredictorTuning tuning)
+    : kind_(kind), curvature_(curvature), grid_(grid), candidates_(candidates), traversal_(traversal),
+      tuning_(tuning) {}
+
+bool ApexPredictor::usable(uint32_t v, const OpenEdge& edge) const {
+    return isAdmissibleApex(v, edge, traversal_);
+}
+
+Vec3 ApexPredictor::predict(const OpenEdge& edge) {
+    const Vec3 a = gridPoint(grid_, edge.vi), b = gridPoint(grid_, edge.vj);
+    Vec3 p = baseApex(kind_, a, b, gridPoint(grid_, edge.opposite));
+    if (norm2(b - a) == 0) return p;  // coincident ends: no edge frame to correct in
+    if (curvature_) p = bendOntoSurface(p, a, b, edge);
+    return scaleToFirstVertexAhead(p, a, b, edge);
+}
+
+// Figure 4: rotate p about the edge onto the plane through the edge and the
+// centroid c of the nearest candidates; of the two rotations that reach the
+// plane, the smaller one.
+Vec3 ApexPredictor::bendOntoSurface(Vec3 p, Vec3 a, Vec3 b, const OpenEdge& edge) {
+    const Vec3 e = b - a, mid = (a + b) * 0.5;
+    const double radius = tuning_.curvatureRadius * norm(e);
+    candidates_.collectNear(p, radius, nearby_);
+    std::vector<std::pair<double, uint32_t>> byDistance;
+    byDistance.reserve(nearby_.size());
+    for (uint32_t v : nearby_) {
+        if (!usable(v, edge)) continue;
+        const double d2 = norm2(gridPoint(grid_, v) - p);
+        if (d2 <= radius * radius) byDistance.emplace_back(d2, v);
+    }
+    if (byDistance.empty()) return p;
+    const size_t keep = std::min(byDistance.size(), size_t(tuning_.curvatureNeighbours));
+    std::partial_sort(byDistance.begin(), byDistance.begin() + keep, byDistance.end());
+    Vec3 centroid;
+    for (size_t i = 0; i < keep; ++i) centroid = centroid + gridPoint(grid_, byDistance[i].second);
+    centroid = centroid * (1.0 / double(keep));
+
+    const Vec3 toward = rejectFrom(centroid - mid, e);
+    const Vec3 offset = rejectFrom(p - mid, e);
+    const double towardLength = norm(toward), offsetLength = norm(offset);
+    if (towardLength == 0 || offsetLength == 0) return p;
+    const double side = dot(offset, toward) < 0 ? -1.0 : 1.0;
+    const Vec3 along = (p - mid) - offset;
+    return mid + along + toward * (side * offsetLength / towardLength);
+}
+
+// Figure 5: among the candidates in the slab ahead of the edge (bounded by
+// two planes perpendicular to the edge, widened beyond its ends), the one
+// nearest the edge along the prediction direction sets the height of the
+// prediction. The search grows outwards until it finds one or gives up.
+Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEdge& edge) {
+    const Vec3 e = b - a, mid = (a + b) * 0.5;
+    const double edgeLength = norm(e);
+    const Vec3 offset = rejectFrom(p - mid, e);
+    const double height = norm(offset);
+    if (height == 0) return p;
+    const Vec3 ahead = offset * (1.0 / height);
+    const double halfSlab = edgeLength * (0.5 + tuning_.slabWidening);
+
+    double radius = 2.0 * std::max(height, edgeLength);
+    for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
+        candidates_.collectNear(mid, radius, nearby_);
+        double firstHeight = 0;
+        uint32_t first = 0;
+        bool found = false;
+        for (uint32_t v : nearby_) {
+            if (!usable(v, edge)) continue;
+            const Vec3 x = gridPoint(grid_, v) - mid;
+            if (norm2(x) > radius * radius) continue;
+            const double h = dot(x, ahead);
+            if (h <= 0) continue;
+            const double along = dot(x, e) / edgeLength;
+            if (along > halfSlab || along < -halfSlab) continue;
+            if (!found || h < firstHeight || (h == firstHeight && v < first)) {
+                firstHeight = h;
+                first = v;
+                found = true;
+            }
+        }
+        if (found) return mid + (p - mid) * (firstHeight / height);
+    }
+    return p;
+}
+
+}  // namespace drm

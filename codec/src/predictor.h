@@ -1,0 +1,62 @@
+// Apex prediction (paper, Section 3.2): where the vertex closing the triangle
+// across an open edge is expected to be.
+//
+// A base predictor (parallelogram or midpoint) uses the triangle already
+// rebuilt on the edge; two corrections then use the whole vertex set, which
+// both sides know before any connectivity is decoded: curvature (bend the
+// prediction onto the plane through the edge and the centroid of the nearby
+// vertices) and size (scale it to the first vertex ahead of the edge).
+#ifndef DRM_PREDICTOR_H
+#define DRM_PREDICTOR_H
+
+#include <vector>
+
+#include "drm/drm.h"
+#include "exact_math.h"
+#include "traversal.h"
+
+namespace drm {
+
+class VertexIndex;
+
+// The base predictors alone, from the edge (a, b) and the opposite vertex o
+// of the rebuilt triangle (a, b, o). Grid units.
+Vec3 parallelogramApex(Vec3 a, Vec3 b, Vec3 o);
+Vec3 midpointApex(Vec3 a, Vec3 b, Vec3 o);
+Vec3 baseApex(Predictor kind, Vec3 a, Vec3 b, Vec3 o);
+
+struct PredictorTuning {
+    // The slab ahead of the edge that the size correction searches extends
+    // this many edge lengths beyond each end of the edge: apexes of right
+    // and obtuse triangles sit just outside the edge's own span.
+    double slabWidening = 0.5;
+    // Curvature: at most this many vertices, within this many edge lengths.
+    int curvatureNeighbours = 10;
+    double curvatureRadius = 4.0;
+};
+
+class ApexPredictor {
+public:
+    ApexPredictor(Predictor kind, bool curvature, const std::vector<int32_t>& grid, const VertexIndex& candidates,
+                  const Traversal& traversal, PredictorTuning tuning = PredictorTuning());
+
+    // The predicted apex of the triangle across edge, in grid units.
+    Vec3 predict(const OpenEdge& edge);
+
+private:
+    Vec3 bendOntoSurface(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
+    Vec3 scaleToFirstVertexAhead(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
+    bool usable(uint32_t v, const OpenEdge& edge) const;
+
+    Predictor kind_;
+    bool curvature_;
+    const std::vector<int32_t>& grid_;
+    const VertexIndex& candidates_;
+    const Traversal& traversal_;
+    PredictorTuning tuning_;
+    std::vector<uint32_t> nearby_;  // scratch, reused by every query
+};
+
+}  // namespace drm
+
+#endif  // DRM_PREDICTOR_H

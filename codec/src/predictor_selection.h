@@ -1,0 +1,26 @@
+// The paper's choice of predictor for a mesh (Section 3.2).
+#ifndef DRM_PREDICTOR_SELECTION_H
+#define DRM_PREDICTOR_SELECTION_H
+
+#include <vector>
+
+#include "drm/drm.h"
+#include "mesh_check.h"
+
+namespace drm {
+
+struct PredictorVotes {
+    uint64_t parallelogram = 0;
+    uint64_t midpoint = 0;
+    Predictor winner() const { return parallelogram > midpoint ? Predictor::Parallelogram : Predictor::Midpoint; }
+};
+
+// Runs the traversal over the mesh without any ranking and, for every
+// triangle it attaches, gives a vote to each base predictor that lands closer
+// to the true apex than any of the apex's neighbours; when neither does, the
+// nearer one gets the vote. Ties go to midpoint.
+PredictorVotes countPredictorVotes(const Mesh& mesh, const MeshTopology& topology, const std::vector<int32_t>& grid);
+
+}  // namespace drm
+
+#endif  // DRM_PREDICTOR_SELECTION_H

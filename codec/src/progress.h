@@ -1,0 +1,35 @@
+// Throttled progress reporting and cancellation for long encodes and decodes.
+#ifndef DRM_PROGRESS_H
+#define DRM_PROGRESS_H
+
+#include "drm/drm.h"
+
+namespace drm {
+
+class ProgressReporter {
+public:
+    explicit ProgressReporter(const Progress& callback) : callback_(callback) {}
+
+    void stage(const char* name, double fraction) {
+        stage_ = name;
+        report(fraction);
+    }
+
+    // Called once per coded edge; reports every few thousand calls only.
+    void tick(double fraction) {
+        if (callback_ && ++ticks_ % 4096 == 0) report(fraction);
+    }
+
+private:
+    void report(double fraction) {
+        if (callback_ && !callback_(fraction, stage_)) throw Error("cancelled");
+    }
+
+    const Progress& callback_;
+    const char* stage_ = "";
+    unsigned ticks_ = 0;
+};
+
+}  // namespace drm
+
+#endif  // DRM_PROGRESS_H

@@ -1,0 +1,51 @@
+// One cubic step over the bounding box: the largest extent is split into
+// 2^bits - 1 steps and the other axes use the same step, so the grid keeps the
+// mesh's proportions (distances on the grid are distances in the model).
+#include "quantize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace drm {
+
+Grid makeGrid(const std::vector<float>& positions, int bits) {
+    if (bits < kMinBits || bits > kMaxBits)
+        throw Error("quantization bits must be between " + std::to_string(kMinBits) + " and " +
+                    std::to_string(kMaxBits) + ", not " + std::to_string(bits));
+    if (positions.size() % 3 != 0) throw Error("the position array does not hold whole xyz triples");
+    if (positions.empty()) throw Error("empty mesh: there are no vertices to encode");
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) lo[k] = hi[k] = positions[size_t(k)];
+    for (size_t i = 0; i < positions.size(); ++i) {
+        const double x = positions[i];
+        if (!std::isfinite(x))
+            throw Error("vertex " + std::to_string(i / 3) + " has a non-finite coordinate (" +
+                        (std::isnan(x) ? std::string("NaN") : std::string("infinity")) + ")");
+        lo[i % 3] = std::min(lo[i % 3], x);
+        hi[i % 3] = std::max(hi[i % 3], x);
+    }
+    Grid grid;
+    grid.bits = bits;
+    double extent = 0;
+    for (int k = 0; k < 3; ++k) {
+        grid.origin[k] = lo[k];
+        extent = std::max(extent, hi[k] - lo[k]);
+    }
+    grid.step = extent > 0 ? extent / double(gridMax(bits)) : 1.0;
+    return grid;
+}
+
+std::vector<int32_t> quantize(const std::vector<float>& positions, const Grid& grid) {
+    std::vector<int32_t> q(positions.size());
+    const double top = gridMax(grid.bits);
+    for (size_t i = 0; i < positions.size(); ++i) {
+        const double x = positions[i];
+        if (!std::isfinite(x)) throw Error("vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
+        const double t = std::floor((x - grid.origin[i % 3]) / grid.step + 0.5);
+        q[i] = int32_t(std::min(std::max(t, 0.0), top));
+    }
+    return q;
+}
+
+}  // namespace drm

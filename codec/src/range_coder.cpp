@@ -1,0 +1,119 @@
+// The coded value is a fraction in [0, 1) written in base 256. The encoder
+// narrows [low, low + range) symbol by symbol; whenever range falls below
+// 2^24 the top byte of low is final except for a possible carry, so it is
+// shifted out into a one-byte cache (plus a count of 0xFF bytes behind it,
+// which a carry would turn into 0x00) and written once no carry can reach it.
+#include "range_coder.h"
+
+#include <cassert>
+#include <utility>
+
+namespace drm {
+
+namespace {
+
+constexpr uint32_t kTop = uint32_t(1) << 24;  // range is renormalized to stay >= kTop
+constexpr uint64_t kCarry = uint64_t(1) << 32;
+// finish() picks a final value whose low three bytes are zero and leaves
+// them off; the decoder reads them as the zeros it invents past the end.
+constexpr size_t kImpliedTailBytes = 3;
+
+}  // namespace
+
+void RangeEncoder::encode(uint32_t cumFreq, uint32_t freq, uint32_t totalFreq) {
+    assert(freq > 0 && totalFreq <= kRangeCoderMaxTotal && cumFreq + freq <= totalFreq);
+    const uint32_t step = range_ / totalFreq;
+    low_ += uint64_t(step) * cumFreq;
+    // The last symbol also takes the remainder range_ % totalFreq, which
+    // would otherwise be wasted.
+    range_ = cumFreq + freq < totalFreq ? step * freq : range_ - step * cumFreq;
+    while (range_ < kTop) {
+        range_ <<= 8;
+        shiftLow();
+    }
+}
+
+void RangeEncoder::encodeBits(uint32_t value, int count) {
+    assert(count >= 0 && count <= 16);
+    if (count <= 0) return;
+    const uint32_t total = uint32_t(1) << count;
+    encode(value & (total - 1), 1, total);
+}
+
+void RangeEncoder::shiftLow() {
+    // A top byte below 0xFF cannot be reached by a later carry (the carry
+    // stops at it), and a set carry bit settles everything held back.
+    if (low_ < 0xFF000000u || low_ >= kCarry) {
+        const uint8_t carry = uint8_t(low_ >> 32);
+        // The leading cache is the value's integer part: always 0, and
+        // never carried into because the interval stays inside [0, 1).
+        if (!cacheIsLeadingZero_) emit(uint8_t(cache_ + carry));
+        for (; pendingFF_ > 0; --pendingFF_) emit(uint8_t(0xFF + carry));
+        cache_ = uint8_t(low_ >> 24);
+        cacheIsLeadingZero_ = false;
+    } else {
+        ++pendingFF_;
+    }
+    low_ = (low_ & 0x00FFFFFFu) << 8;
+}
+
+void RangeEncoder::emit(uint8_t byte) { out_.push_back(byte); }
+
+std::vector<uint8_t> RangeEncoder::finish() {
+    // Any value in [low, low + range) identifies the stream. Since
+    // range >= 2^24, rounding low up to a multiple of 2^24 stays inside and
+    // leaves only one byte (plus carry) that is not zero.
+    low_ = (low_ + (kTop - 1)) & ~uint64_t(kTop - 1);
+    shiftLow();  // moves that byte into the cache
+    shiftLow();  // low is now 0, so this writes the cache and any 0xFF run
+    range_ = 0;  // spent
+    return std::move(out_);
+}
+
+RangeDecoder::RangeDecoder(const uint8_t* data, size_t size) : data_(data), size_(size) {
+    for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | nextByte();
+}
+
+uint8_t RangeDecoder::nextByte() {
+    const size_t at = pos_++;
+    return at < size_ ? data_[at] : 0;
+}
+
+void RangeDecoder::normalize() {
+    while (range_ < kTop) {
+        range_ <<= 8;
+        code_ = (code_ << 8) | nextByte();
+    }
+}
+
+uint32_t RangeDecoder::decodeFreq(uint32_t totalFreq) {
+    assert(totalFreq > 0 && totalFreq <= kRangeCoderMaxTotal);
+    const uint32_t slot = code_ / (range_ / totalFreq);
+    // Values in the last symbol's remainder (or from corrupt input) land
+    // past the end; they belong to the last slot.
+    return slot < totalFreq ? slot : totalFreq - 1;
+}
+
+void RangeDecoder::consume(uint32_t cumFreq, uint32_t freq, uint32_t totalFreq) {
+    assert(freq > 0 && totalFreq <= kRangeCoderMaxTotal && cumFreq + freq <= totalFreq);
+    const uint32_t step = range_ / totalFreq;
+    code_ -= step * cumFreq;
+    range_ = cumFreq + freq < totalFreq ? step * freq : range_ - step * cumFreq;
+    normalize();
+}
+
+uint32_t RangeDecoder::decodeBits(int count) {
+    assert(count >= 0 && count <= 16);
+    if (count <= 0) return 0;
+    const uint32_t total = uint32_t(1) << count;
+    const uint32_t value = decodeFreq(total);
+    consume(value, 1, total);
+    return value;
+}
+
+size_t RangeDecoder::bytesPastEnd() const {
+    const size_t invented = pos_ > size_ ? pos_ - size_ : 0;
+    return invented > kImpliedTailBytes ? invented - kImpliedTailBytes : 0;
+}
+
+}  // namespace drm

@@ -1,0 +1,77 @@
+// A byte-oriented range coder: a 32-bit range over a 64-bit low register,
+// with carries resolved by holding back the last byte and any run of 0xFF
+// bytes until it is known whether a carry reaches them.
+//
+// Frequencies are integers and the arithmetic is integer only, so encoder and
+// decoder agree bit for bit on every machine.
+#ifndef DRM_RANGE_CODER_H
+#define DRM_RANGE_CODER_H
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace drm {
+
+// Largest totalFreq the coders accept. The range never drops below 2^24, so
+// each of the up to 2^16 slots keeps at least 2^8 range values.
+constexpr uint32_t kRangeCoderMaxTotal = uint32_t(1) << 16;
+
+class RangeEncoder {
+public:
+    // Codes the symbol that owns [cumFreq, cumFreq + freq) of [0, totalFreq).
+    // Requires 0 < freq, cumFreq + freq <= totalFreq <= kRangeCoderMaxTotal.
+    void encode(uint32_t cumFreq, uint32_t freq, uint32_t totalFreq);
+    // Codes the low `count` bits of value (count in 0..16), each bit costing
+    // exactly one bit; higher bits of value are ignored.
+    void encodeBits(uint32_t value, int count);
+    // Flushes the coder and hands over the bytes. The encoder is spent.
+    // The stream omits its last three bytes, which are always zero: the
+    // decoder supplies them itself.
+    std::vector<uint8_t> finish();
+
+private:
+    void shiftLow();
+    void emit(uint8_t byte);
+
+    uint64_t low_ = 0;              // bit 32 is a pending carry
+    uint32_t range_ = 0xFFFFFFFFu;
+    uint8_t cache_ = 0;             // last settled-but-unwritten byte
+    uint64_t pendingFF_ = 0;        // 0xFF bytes after cache_ awaiting a carry
+    bool cacheIsLeadingZero_ = true;  // cache_ is the value's integer part, never written
+    std::vector<uint8_t> out_;
+};
+
+class RangeDecoder {
+public:
+    // Reading past the end of data yields zero bytes (counted, see
+    // bytesPastEnd), so any input is safe to decode.
+    RangeDecoder(const uint8_t* data, size_t size);
+
+    // The slot the next symbol falls in, in [0, totalFreq); corrupt input
+    // is clamped into range. Must be followed by consume() of the symbol
+    // that owns that slot.
+    uint32_t decodeFreq(uint32_t totalFreq);
+    void consume(uint32_t cumFreq, uint32_t freq, uint32_t totalFreq);
+    // Inverse of RangeEncoder::encodeBits.
+    uint32_t decodeBits(int count);
+
+    // Zero bytes invented past the end of the data, not counting the three
+    // bytes finish() leaves off. After the last symbol of an intact stream
+    // this is 0; more means the stream was truncated (or is not a stream).
+    size_t bytesPastEnd() const;
+
+private:
+    uint8_t nextByte();
+    void normalize();
+
+    const uint8_t* data_;
+    size_t size_;
+    size_t pos_ = 0;   // bytes read, including invented ones
+    uint32_t range_ = 0xFFFFFFFFu;
+    uint32_t code_ = 0;  // offset of the coded value above the interval's low end
+};
+
+}  // namespace drm
+
+#endif  // DRM_RANGE_CODER_H

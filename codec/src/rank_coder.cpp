@@ -1,0 +1,153 @@
+#include "rank_coder.h"
+
+#include <string>
+
+#include "drm/drm.h"
+
+namespace drm {
+
+namespace {
+
+// A coded symbol's count grows by kIncrement; once the total passes kLimit
+// all counts are halved (rounding up, so none reaches zero). With totals
+// near 2^16 a probability of 0.93 costs within 0.1% of its ideal length,
+// and the halving keeps roughly the last 2000 symbols of a context in view.
+// Measured on synthetic rank streams (tests/unit/test_rank_coder.cpp).
+constexpr uint32_t kIncrement = 32;
+constexpr uint32_t kLimit = kRangeCoderMaxTotal;
+
+constexpr uint32_t kEscape = kRankDirectSymbols;
+// Escaped ranks code w = rank - kRankDirectSymbols + 1 >= 1 as its bit
+// length (1..32, an adaptive symbol) followed by the bits below its leading
+// one. A length of 32 is only valid for the few largest ranks; a decoded w
+// that overflows uint32 ranks is rejected as corrupt.
+constexpr uint32_t kMaxEscapeBits = 32;
+
+// Starting counts of the rank symbols. Nearly all ranks are 1 and 2 with
+// 0 and 3 next, so starting them ahead shortens the learning phase of each
+// context; every symbol needs a count of at least 1.
+std::vector<uint16_t> rankPrior() {
+    std::vector<uint16_t> counts(kRankDirectSymbols + 1, 1);
+    counts[0] = 2;
+    counts[1] = 16;
+    counts[2] = 4;
+    counts[3] = 2;
+    return counts;
+}
+
+std::vector<uint16_t> escapeLengthPrior() { return std::vector<uint16_t>(kMaxEscapeBits, 1); }
+
+int rankClass(uint32_t rank) { return rank == 1 ? 1 : rank == 2 ? 2 : 0; }
+constexpr int kRankClasses = 3;
+
+int checkedExtraContexts(int extraContexts) {
+    if (extraContexts < 1)
+        throw Error("internal error: the rank coder needs at least one context, not " +
+                    std::to_string(extraContexts));
+    return extraContexts;
+}
+
+void checkExtraContext(int extraContext, int extraContexts) {
+    if (extraContext < 0 || extraContext >= extraContexts)
+        throw Error("internal error: rank context " + std::to_string(extraContext) +
+                    " is outside [0, " + std::to_string(extraContexts) + ")");
+}
+
+int bitLength(uint64_t w) {
+    int n = 0;
+    for (; w != 0; w >>= 1) ++n;
+    return n;
+}
+
+}  // namespace
+
+AdaptiveFrequencies::AdaptiveFrequencies(const std::vector<uint16_t>& initialCounts)
+    : counts_(initialCounts.begin(), initialCounts.end()) {
+    for (uint32_t c : counts_) total_ += c;
+}
+
+void AdaptiveFrequencies::encode(RangeEncoder& coder, uint32_t symbol) {
+    uint32_t cum = 0;
+    for (uint32_t s = 0; s < symbol; ++s) cum += counts_[s];
+    coder.encode(cum, counts_[symbol], total_);
+    update(symbol);
+}
+
+uint32_t AdaptiveFrequencies::decode(RangeDecoder& coder) {
+    const uint32_t target = coder.decodeFreq(total_);
+    // Linear search: the common ranks are the first symbols, so this
+    // usually stops after two steps. target < total_ bounds it.
+    uint32_t symbol = 0;
+    uint32_t cum = 0;
+    while (cum + counts_[symbol] <= target) cum += counts_[symbol++];
+    coder.consume(cum, counts_[symbol], total_);
+    update(symbol);
+    return symbol;
+}
+
+void AdaptiveFrequencies::update(uint32_t symbol) {
+    counts_[symbol] += kIncrement;
+    total_ += kIncrement;
+    if (total_ <= kLimit) return;
+    total_ = 0;
+    for (uint32_t& c : counts_) {
+        c = (c + 1) >> 1;
+        total_ += c;
+    }
+}
+
+RankEncoder::RankEncoder(int extraContexts)
+    : extraContexts_(checkedExtraContexts(extraContexts)),
+      ranks_(size_t(kRankClasses) * size_t(extraContexts_), AdaptiveFrequencies(rankPrior())),
+      escapeLengths_(escapeLengthPrior()) {}
+
+void RankEncoder::put(uint32_t rank, int extraContext) {
+    checkExtraContext(extraContext, extraContexts_);
+    AdaptiveFrequencies& model = ranks_[size_t(previousClass_ * extraContexts_ + extraContext)];
+    previousClass_ = rankClass(rank);
+    if (rank < kRankDirectSymbols) {
+        model.encode(coder_, rank);
+        return;
+    }
+    model.encode(coder_, kEscape);
+    const uint64_t w = uint64_t(rank) - kRankDirectSymbols + 1;
+    const int length = bitLength(w);
+    escapeLengths_.encode(coder_, uint32_t(length - 1));
+    // The bits below the leading one, most significant chunk first.
+    for (int left = length - 1; left > 0;) {
+        const int chunk = left < 16 ? left : 16;
+        left -= chunk;
+        coder_.encodeBits(uint32_t(w >> left), chunk);
+    }
+}
+
+std::vector<uint8_t> RankEncoder::finish() { return coder_.finish(); }
+
+RankDecoder::RankDecoder(const uint8_t* data, size_t size, int extraContexts)
+    : coder_(data, size),
+      extraContexts_(checkedExtraContexts(extraContexts)),
+      ranks_(size_t(kRankClasses) * size_t(extraContexts_), AdaptiveFrequencies(rankPrior())),
+      escapeLengths_(escapeLengthPrior()) {}
+
+uint32_t RankDecoder::get(int extraContext) {
+    checkExtraContext(extraContext, extraContexts_);
+    AdaptiveFrequencies& model = ranks_[size_t(previousClass_ * extraContexts_ + extraContext)];
+    uint32_t rank = model.decode(coder_);
+    if (rank == kEscape) {
+        const int length = int(escapeLengths_.decode(coder_)) + 1;
+        uint64_t w = 1;
+        for (int left = length - 1; left > 0;) {
+            const int chunk = left < 16 ? left : 16;
+            left -= chunk;
+            w = (w << chunk) | coder_.decodeBits(chunk);
+        }
+        const uint64_t wide = w - 1 + kRankDirectSymbols;
+        if (wide > UINT32_MAX)
+            throw Error("corrupt connectivity stream: an escaped rank does not fit in 32 bits");
+        rank = uint32_t(wide);
+    }
+    previousClass_ = rankClass(rank);
+    return rank;
+}
+
+}  // namespace drm

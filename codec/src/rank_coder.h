@@ -1,0 +1,77 @@
+// The connectivity stream coder: the paper's adaptive arithmetic coder with
+// an order-1 context on ranks 1 and 2.
+//
+// Each rank is coded in a context made of the class of the previous rank
+// (1, 2, or anything else) and a context index the caller supplies. Ranks
+// below kRankDirectSymbols have a symbol each; larger ranks take an escape
+// symbol followed by an Exp-Golomb code of rank - kRankDirectSymbols, so any
+// uint32 can be coded.
+#ifndef DRM_RANK_CODER_H
+#define DRM_RANK_CODER_H
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "range_coder.h"
+
+namespace drm {
+
+// Ranks 0..kRankDirectSymbols-1 are coded as symbols of their own.
+constexpr uint32_t kRankDirectSymbols = 24;
+
+// An adaptive frequency table over symbols 0..size-1: every coded symbol
+// gains a fixed increment, and the counts are halved when their total grows
+// past the range coder's limit, which also lets the table follow drift.
+class AdaptiveFrequencies {
+public:
+    explicit AdaptiveFrequencies(const std::vector<uint16_t>& initialCounts);
+
+    void encode(RangeEncoder& coder, uint32_t symbol);
+    uint32_t decode(RangeDecoder& coder);
+
+private:
+    void update(uint32_t symbol);
+
+    std::vector<uint32_t> counts_;
+    uint32_t total_ = 0;
+};
+
+class RankEncoder {
+public:
+    // extraContexts >= 1 is the number of values of the caller's context.
+    explicit RankEncoder(int extraContexts = 1);
+    // rank: any value (0 = boundary edge); extraContext in [0, extraContexts).
+    void put(uint32_t rank, int extraContext = 0);
+    // Flushes and hands over the bytes; the encoder is spent.
+    std::vector<uint8_t> finish();
+
+private:
+    RangeEncoder coder_;
+    int extraContexts_;
+    std::vector<AdaptiveFrequencies> ranks_;  // [previous rank class][extra context]
+    AdaptiveFrequencies escapeLengths_;       // bit lengths of escaped ranks
+    int previousClass_ = 0;
+};
+
+class RankDecoder {
+public:
+    RankDecoder(const uint8_t* data, size_t size, int extraContexts = 1);
+    // The next rank. Throws Error if the stream holds a rank that does not
+    // fit in 32 bits (corrupt data); otherwise any input decodes to values.
+    uint32_t get(int extraContext = 0);
+    // See RangeDecoder::bytesPastEnd: 0 after the last rank of an intact
+    // stream.
+    size_t bytesPastEnd() const { return coder_.bytesPastEnd(); }
+
+private:
+    RangeDecoder coder_;
+    int extraContexts_;
+    std::vector<AdaptiveFrequencies> ranks_;
+    AdaptiveFrequencies escapeLengths_;
+    int previousClass_ = 0;
+};
+
+}  // namespace drm
+
+#endif  // DRM_RANK_CODER_H

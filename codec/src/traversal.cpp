@@ -1,0 +1,105 @@
+#include "traversal.h"
+
+#include <string>
+
+#include "drm/drm.h"
+#include "vertex_index.h"
+
+namespace drm {
+namespace {
+uint64_t packEdge(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
+}  // namespace
+
+Traversal::Traversal(size_t vertexCount, size_t expectedFaces, VertexIndex* candidates)
+    : halfEdges_(3 * expectedFaces + 16), openEdges_(vertexCount, 0), state_(vertexCount, kUntouched),
+      candidates_(candidates) {
+    triangles_.reserve(3 * expectedFaces);
+}
+
+void Traversal::startComponent(uint32_t a, uint32_t b, uint32_t c) {
+    const uint32_t corner[3] = {a, b, c};
+    for (uint32_t v : corner) {
+        if (v >= vertexCount())
+            throw Error("start triangle refers to vertex " + std::to_string(v) + ", but there are only " +
+                        std::to_string(vertexCount()) + " vertices");
+        if (state_[v] != kUntouched)
+            throw Error("start triangle uses vertex " + std::to_string(v) + ", which an earlier component already uses");
+    }
+    if (a == b || b == c || a == c) throw Error("start triangle repeats vertex " + std::to_string(a == b ? a : c));
+    // The paper pushes the three edges in order to the back; (a, b) is popped first.
+    addHalfEdge(a, b, c);
+    addHalfEdge(b, c, a);
+    addHalfEdge(c, a, b);
+    triangles_.insert(triangles_.end(), {a, b, c});
+    queue_.push_back(packEdge(a, b));
+    queue_.push_back(packEdge(b, c));
+    queue_.push_back(packEdge(c, a));
+}
+
+bool Traversal::popOpenEdge(OpenEdge& edge) {
+    while (!queue_.empty()) {
+        const uint64_t packed = queue_.front();
+        queue_.pop_front();
+        const uint32_t vi = uint32_t(packed >> 32), vj = uint32_t(packed);
+        if (halfEdges_.contains(vj, vi)) continue;  // closed: a triangle or a boundary code is there
+        edge.vi = vi;
+        edge.vj = vj;
+        edge.opposite = halfEdges_.find(vi, vj);
+        return true;
+    }
+    return false;
+}
+
+void Traversal::closeAsBoundary(const OpenEdge& edge) {
+    halfEdges_.insert(edge.vj, edge.vi, kBoundary);
+    --openEdges_[edge.vi];
+    --openEdges_[edge.vj];
+    releaseIfDone(edge.vi);
+    releaseIfDone(edge.vj);
+}
+
+void Traversal::attachApex(const OpenEdge& edge, uint32_t apex) {
+    if (apex >= vertexCount() || state_[apex] == kCulled || apex == edge.vi || apex == edge.vj)
+        throw Error("the stream attaches vertex " + std::to_string(apex) + " to edge " + std::to_string(edge.vi) +
+                    "-" + std::to_string(edge.vj) + ", where it cannot go");
+    if (halfEdges_.contains(edge.vi, apex) || halfEdges_.contains(apex, edge.vj))
+        throw Error("triangle (" + std::to_string(edge.vj) + ", " + std::to_string(edge.vi) + ", " +
+                    std::to_string(apex) + ") would reuse a directed edge");
+    addHalfEdge(edge.vj, edge.vi, apex);
+    addHalfEdge(edge.vi, apex, edge.vj);
+    addHalfEdge(apex, edge.vj, edge.vi);
+    triangles_.insert(triangles_.end(), {edge.vj, edge.vi, apex});
+    // Left edge to the front keeps the traversal circling the current vertex
+    // (paper, Section 3: 5.6% better than breadth first); right edge to the back.
+    queue_.push_front(packEdge(edge.vi, apex));
+    queue_.push_back(packEdge(apex, edge.vj));
+    releaseIfDone(edge.vi);
+    releaseIfDone(edge.vj);
+    releaseIfDone(apex);
+}
+
+void Traversal::addHalfEdge(uint32_t a, uint32_t b, uint32_t opposite) {
+    if (state_[a] == kUntouched) state_[a] = kActive;
+    if (state_[b] == kUntouched) state_[b] = kActive;
+    if (halfEdges_.contains(b, a)) {
+        // The twin was an open edge; this triangle closes it.
+        --openEdges_[a];
+        --openEdges_[b];
+    } else {
+        ++openEdges_[a];
+        ++openEdges_[b];
+    }
+    halfEdges_.insert(a, b, opposite);
+}
+
+void Traversal::releaseIfDone(uint32_t v) {
+    // In a manifold mesh a touched vertex with no open edge has its whole fan
+    // rebuilt (closed, or ending on two coded boundary edges): no later
+    // triangle can use it, so it leaves the candidate set (paper, Section 3).
+    if (state_[v] == kActive && openEdges_[v] == 0) {
+        state_[v] = kCulled;
+        if (candidates_) candidates_->remove(v);
+    }
+}
+
+}  // namespace drm

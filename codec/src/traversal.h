@@ -1,0 +1,77 @@
+// The edge traversal shared by encoder and decoder (paper, Tables 1 and 2).
+//
+// It holds only what the decoder knows: the triangles rebuilt so far, which
+// directed edges they use, which edges were coded as boundary, and how many
+// open edges each vertex still has. The encoder drives it with the true apex
+// of each open edge, the decoder with the apex found from the decoded rank;
+// because both run this one class, they visit the same edges in the same
+// order and cull the same vertices.
+#ifndef DRM_TRAVERSAL_H
+#define DRM_TRAVERSAL_H
+
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "halfedge_map.h"
+
+namespace drm {
+
+class VertexIndex;
+
+// A directed edge (vi, vj) of a rebuilt triangle (vi, vj, opposite) whose
+// other side is still unknown. The triangle to find there is (vj, vi, apex).
+struct OpenEdge {
+    uint32_t vi = 0, vj = 0, opposite = 0;
+};
+
+class Traversal {
+public:
+    // candidates, if given, loses each vertex as soon as it is culled.
+    Traversal(size_t vertexCount, size_t expectedFaces, VertexIndex* candidates);
+
+    // Inserts a component's start triangle and queues its three edges.
+    // Throws Error if a vertex is out of range, repeated, or already used.
+    void startComponent(uint32_t a, uint32_t b, uint32_t c);
+
+    // Pops edges from the front of the deque until one is open (no triangle
+    // and no boundary code on its other side yet). False when none is left.
+    bool popOpenEdge(OpenEdge& edge);
+
+    // Records the rank-0 code: nothing lies on the other side of edge.
+    void closeAsBoundary(const OpenEdge& edge);
+
+    // Inserts the triangle (vj, vi, apex) across edge; queues its left edge
+    // (vi, apex) at the front and its right edge (apex, vj) at the back.
+    // Throws Error if the triangle would reuse a directed edge or a culled
+    // vertex (only a corrupt stream can ask for that).
+    void attachApex(const OpenEdge& edge, uint32_t apex);
+
+    bool isCulled(uint32_t v) const { return state_[v] == kCulled; }
+    bool isTouched(uint32_t v) const { return state_[v] != kUntouched; }
+    size_t vertexCount() const { return openEdges_.size(); }
+
+    // Rebuilt triangles, in the order they were inserted.
+    const std::vector<uint32_t>& triangles() const { return triangles_; }
+    size_t triangleCount() const { return triangles_.size() / 3; }
+
+private:
+    enum : uint8_t { kUntouched = 0, kActive = 1, kCulled = 2 };
+    static constexpr uint32_t kBoundary = 0xFFFFFFFEu;
+
+    void addHalfEdge(uint32_t a, uint32_t b, uint32_t opposite);
+    void releaseIfDone(uint32_t v);
+
+    // Directed edge (a, b) -> the third vertex of its triangle, or kBoundary
+    // for the missing twin of an edge that was coded as boundary.
+    HalfEdgeMap halfEdges_;
+    std::vector<uint32_t> openEdges_;  // per vertex: open edges it lies on
+    std::vector<uint8_t> state_;
+    std::deque<uint64_t> queue_;       // packed directed edges (vi, vj)
+    std::vector<uint32_t> triangles_;
+    VertexIndex* candidates_;
+};
+
+}  // namespace drm
+
+#endif  // DRM_TRAVERSAL_H

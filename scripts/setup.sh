@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Installs everything drm needs on Debian bookworm and fetches MeshLab 2020.09's
+# headers and vcglib from Debian's `meshlab` source package into third_party/.
+# Idempotent: a second run only checks and returns in about a second.
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+meshlab_src_version="2020.09+dfsg1-2"
+meshlab_dir="$here/third_party/meshlab-$meshlab_src_version"
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libflann-dev liblz4-dev libgtest-dev libeigen3-dev
+  meshlab qtbase5-dev libqt5opengl5-dev libglew-dev
+  xvfb xauth dpkg-dev
+  clang libfuzzer-14-dev libclang-rt-14-dev
+)
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"
+  elif command -v sudo >/dev/null; then sudo "$@"
+  else echo "setup: need root or sudo to install: $*" >&2; exit 1
+  fi
+}
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  as_root apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# MeshLab's headers and the vcglib it was built with exist only in the source
+# package. Fetch it with apt's own configuration turned into deb-src entries in
+# a private folder, so /etc/apt is never touched.
+if [ ! -f "$meshlab_dir/vcglib/vcg/complex/complex.h" ]; then
+  echo "setup: fetching MeshLab $meshlab_src_version sources (headers + vcglib)"
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+  mkdir -p "$tmp/sources.list.d" "$tmp/lists/partial" "$tmp/archives"
+  for f in /etc/apt/sources.list.d/*.sources; do
+    [ -f "$f" ] || continue
+    sed -E 's/^Types:.*/Types: deb-src/' "$f" > "$tmp/sources.list.d/$(basename "$f")"
+  done
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+    [ -f "$f" ] || continue
+    grep -E '^deb ' "$f" | sed -E 's/^deb /deb-src /' > "$tmp/sources.list.d/$(basename "$f").list" || true
+  done
+  apt_opts=(-o Dir::Etc::SourceList=/dev/null -o "Dir::Etc::SourceParts=$tmp/sources.list.d"
+            -o "Dir::State::Lists=$tmp/lists" -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache=
+            -o APT::Sandbox::User=root)
+  as_root apt-get "${apt_opts[@]}" update -qq
+  (cd "$tmp/archives" && as_root apt-get "${apt_opts[@]}" source --download-only -qq "meshlab=$meshlab_src_version")
+  mkdir -p "$here/third_party"
+  rm -rf "$meshlab_dir"
+  (cd "$tmp/archives" && dpkg-source --no-check -x "meshlab_$meshlab_src_version.dsc" "$meshlab_dir" >/dev/null)
+  [ -f "$meshlab_dir/vcglib/vcg/complex/complex.h" ] || { echo "setup: vcglib missing from the source package" >&2; exit 1; }
+fi
+echo "setup: ok (MeshLab sources in ${meshlab_dir#$here/})"

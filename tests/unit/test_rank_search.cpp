@@ -1,0 +1,105 @@
+// The exact rank search against a brute-force ranking, on random points on a
+// coarse grid, where equal distances and coincident vertices are common.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "rank_search.h"
+#include "traversal.h"
+#include "vertex_index.h"
+
+namespace drm {
+namespace {
+
+struct Scene {
+    std::vector<int32_t> grid;
+    std::unique_ptr<VertexIndex> index;
+    std::unique_ptr<Traversal> traversal;
+};
+
+Scene randomScene(std::mt19937& rng, size_t count, int extent) {
+    Scene s;
+    std::uniform_int_distribution<int> coord(0, extent);
+    for (size_t i = 0; i < 3 * count; ++i) s.grid.push_back(coord(rng));
+    s.index.reset(new VertexIndex(s.grid));
+    s.traversal.reset(new Traversal(count, 4, s.index.get()));
+    return s;
+}
+
+// All admissible vertices ordered by (exact fixed-point distance, index).
+std::vector<uint32_t> bruteForceOrder(const Scene& s, RankSearch& search, Vec3 prediction, const OpenEdge& edge,
+                                      int bits) {
+    const FixedPoint p = snapPrediction(prediction, bits);
+    std::vector<std::pair<int64_t, uint32_t>> all;
+    for (uint32_t v = 0; v < s.grid.size() / 3; ++v)
+        if (v != edge.vi && v != edge.vj && !s.traversal->isCulled(v)) all.emplace_back(search.distance2(p, v), v);
+    std::sort(all.begin(), all.end());
+    std::vector<uint32_t> order;
+    for (auto& d : all) order.push_back(d.second);
+    return order;
+}
+
+TEST(RankSearch, MatchesBruteForceWithManyTies) {
+    std::mt19937 rng(12345);
+    const int bits = 12;
+    for (int trial = 0; trial < 20; ++trial) {
+        Scene s = randomScene(rng, 400, 12);  // 400 points on a 13^3 grid: many duplicates and ties
+        RankSearch search(s.grid, bits, *s.index, *s.traversal);
+        std::uniform_real_distribution<double> at(-3.0, 15.0);
+        for (int q = 0; q < 30; ++q) {
+            OpenEdge edge{uint32_t(rng() % 400), uint32_t(rng() % 400), 0};
+            if (edge.vi == edge.vj) continue;
+            // Half the predictions sit exactly on grid points or half-steps, where ties abound.
+            Vec3 p{at(rng), at(rng), at(rng)};
+            if (q % 2) p = {std::floor(p.x * 2) / 2, std::floor(p.y * 2) / 2, std::floor(p.z * 2) / 2};
+            const std::vector<uint32_t> order = bruteForceOrder(s, search, p, edge, bits);
+            for (size_t k = 0; k < order.size(); k += 1 + k / 8) {
+                EXPECT_EQ(search.rankOf(p, order[k], edge), k + 1) << "trial " << trial << " query " << q;
+                EXPECT_EQ(search.vertexOfRank(p, uint32_t(k + 1), edge), order[k]);
+            }
+            EXPECT_THROW(search.vertexOfRank(p, uint32_t(order.size() + 1), edge), Error);
+        }
+    }
+}
+
+TEST(RankSearch, FarPredictionsAndLargeGrids) {
+    std::mt19937 rng(7);
+    const int bits = 21;
+    Scene s = randomScene(rng, 300, (1 << bits) - 1);
+    RankSearch search(s.grid, bits, *s.index, *s.traversal);
+    const OpenEdge edge{0, 1, 2};
+    // Predictions far outside the box are clamped, never overflow.
+    for (Vec3 p : {Vec3{-1e12, 5, 5}, Vec3{3e9, -4e9, 1e10}, Vec3{1048576.25, 7.5, 2097151}}) {
+        const std::vector<uint32_t> order = bruteForceOrder(s, search, p, edge, bits);
+        for (size_t k = 0; k < order.size(); k += 17) {
+            EXPECT_EQ(search.rankOf(p, order[k], edge), k + 1);
+            EXPECT_EQ(search.vertexOfRank(p, uint32_t(k + 1), edge), order[k]);
+        }
+    }
+}
+
+TEST(RankSearch, CulledVerticesAreNotCandidates) {
+    // A closed tetrahedron plus two loose points: once its four faces are in,
+    // all four of its vertices are culled and only the loose points remain.
+    std::vector<int32_t> grid = {0, 0, 0, 10, 0, 0, 0, 10, 0, 0, 0, 10, 3, 3, 3, 50, 50, 50};
+    VertexIndex index(grid);
+    Traversal traversal(6, 4, &index);
+    traversal.startComponent(0, 2, 1);
+    const uint32_t apexes[3] = {3, 3, 3};
+    OpenEdge edge;
+    int attached = 0;
+    while (traversal.popOpenEdge(edge)) traversal.attachApex(edge, apexes[attached++]);
+    EXPECT_EQ(traversal.triangleCount(), 4u);
+    for (uint32_t v = 0; v < 4; ++v) EXPECT_TRUE(traversal.isCulled(v));
+    EXPECT_EQ(index.presentCount(), 2u);
+    RankSearch search(grid, 12, index, traversal);
+    const OpenEdge loose{4, 5, 4};  // an edge that is not in the mesh: only candidates matter
+    EXPECT_THROW(search.vertexOfRank({0, 0, 0}, 1, loose), Error);
+    const OpenEdge other{0, 1, 2};
+    EXPECT_EQ(search.vertexOfRank({0, 0, 0}, 1, other), 4u);
+    EXPECT_EQ(search.vertexOfRank({0, 0, 0}, 2, other), 5u);
+}
+
+}  // namespace
+}  // namespace drm

@@ -1,0 +1,172 @@
+// The traversal and the whole codec on hand-made meshes: code counts
+// (T + B - 1 per component), culling, holes, several components, and the
+// refusals of meshes the method cannot represent.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <numeric>
+#include <set>
+
+#include "drm/drm.h"
+#include "traversal.h"
+
+namespace drm {
+namespace {
+
+Mesh gridPatch(int n, int m) {  // an n x m grid of quads, each split in two: an open square patch
+    Mesh mesh;
+    for (int j = 0; j <= m; ++j)
+        for (int i = 0; i <= n; ++i) mesh.positions.insert(mesh.positions.end(), {float(i), float(j), 0.f});
+    auto at = [&](int i, int j) { return uint32_t(j * (n + 1) + i); };
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < n; ++i) {
+            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    return mesh;
+}
+
+Mesh tetrahedron() {
+    Mesh mesh;
+    mesh.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    mesh.triangles = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    return mesh;
+}
+
+std::multiset<std::array<uint32_t, 3>> orientedTriangles(const Mesh& mesh) {
+    std::multiset<std::array<uint32_t, 3>> set;
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+        std::array<uint32_t, 3> t = {mesh.triangles[3 * f], mesh.triangles[3 * f + 1], mesh.triangles[3 * f + 2]};
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        set.insert(t);
+    }
+    return set;
+}
+
+uint64_t codeCount(const Stats& s) {
+    return std::accumulate(s.rankHistogram.begin(), s.rankHistogram.end(), uint64_t(0));
+}
+
+void expectRoundTrip(const Mesh& mesh, uint64_t boundaryEdges, uint64_t components) {
+    const Encoded encoded = encode(mesh);
+    EXPECT_EQ(encoded.stats.boundaryEdges, boundaryEdges);
+    EXPECT_EQ(encoded.stats.components, components);
+    EXPECT_EQ(codeCount(encoded.stats), mesh.faceCount() + boundaryEdges - components);
+    const Decoded decoded = decode(encoded.bytes);
+    EXPECT_EQ(decoded.quantized, encoded.quantized);  // raw geometry keeps the input order
+    EXPECT_EQ(orientedTriangles(decoded.mesh), orientedTriangles(mesh));
+    EXPECT_EQ(decoded.stats.rankHistogram, encoded.stats.rankHistogram);
+}
+
+TEST(Traversal, SingleTriangleCodesThreeBoundaries) {
+    Mesh mesh;
+    mesh.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    mesh.triangles = {0, 1, 2};
+    expectRoundTrip(mesh, 3, 1);
+}
+
+TEST(Traversal, ClosedTetrahedronNeedsThreeCodes) { expectRoundTrip(tetrahedron(), 0, 1); }
+
+TEST(Traversal, OpenPatchCodesItsBoundary) {
+    const Mesh mesh = gridPatch(6, 4);
+    expectRoundTrip(mesh, 2 * (6 + 4), 1);
+}
+
+TEST(Traversal, PatchWithAHole) {
+    Mesh mesh = gridPatch(5, 5);
+    // Drop the two triangles of the centre quad (2, 2): an inner boundary loop of 4 edges.
+    const size_t centre = 2 * (2 * 5 + 2);
+    mesh.triangles.erase(mesh.triangles.begin() + 3 * centre, mesh.triangles.begin() + 3 * (centre + 2));
+    expectRoundTrip(mesh, 2 * (5 + 5) + 4, 1);
+}
+
+TEST(Traversal, SeveralComponentsAndIsolatedVertices) {
+    Mesh mesh = tetrahedron();
+    Mesh patch = gridPatch(3, 2);
+    const uint32_t offset = uint32_t(mesh.vertexCount());
+    for (float& x : patch.positions) x += 5.f;
+    mesh.positions.insert(mesh.positions.end(), patch.positions.begin(), patch.positions.end());
+    for (uint32_t v : patch.triangles) mesh.triangles.push_back(v + offset);
+    mesh.positions.insert(mesh.positions.end(), {9.f, 9.f, 9.f, -1.f, 2.f, 3.f});  // two isolated vertices
+    expectRoundTrip(mesh, 2 * (3 + 2), 2);
+}
+
+TEST(Traversal, CullsEveryVertexOfAClosedMesh) {
+    Traversal traversal(4, 4, nullptr);
+    traversal.startComponent(0, 2, 1);
+    OpenEdge edge;
+    ASSERT_TRUE(traversal.popOpenEdge(edge));
+    EXPECT_EQ(edge.vi, 0u);
+    EXPECT_EQ(edge.vj, 2u);
+    EXPECT_EQ(edge.opposite, 1u);
+    traversal.attachApex(edge, 3);  // triangle (2, 0, 3)
+    EXPECT_FALSE(traversal.isCulled(0));
+    int more = 0;
+    while (traversal.popOpenEdge(edge)) {
+        traversal.attachApex(edge, 3);
+        ++more;
+    }
+    EXPECT_EQ(more, 2);
+    for (uint32_t v = 0; v < 4; ++v) EXPECT_TRUE(traversal.isCulled(v)) << v;
+}
+
+TEST(Traversal, RejectsAReusedDirectedEdge) {
+    Traversal traversal(5, 4, nullptr);
+    traversal.startComponent(0, 1, 2);
+    OpenEdge edge;
+    ASSERT_TRUE(traversal.popOpenEdge(edge));  // (0, 1)
+    EXPECT_THROW(traversal.attachApex(edge, 0), Error);  // an end of the edge itself
+    traversal.attachApex(edge, 3);                       // triangle (1, 0, 3)
+    ASSERT_TRUE(traversal.popOpenEdge(edge));            // its left edge (0, 3) comes first
+    EXPECT_EQ(edge.vi, 0u);
+    EXPECT_EQ(edge.vj, 3u);
+    EXPECT_THROW(traversal.attachApex(edge, 1), Error);  // (3, 0, 1) would reuse 0->1
+}
+
+TEST(MeshCheck, RefusesWhatTheMethodCannotRepresent) {
+    auto message = [](const Mesh& m) {
+        try {
+            encode(m);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    Mesh empty;
+    EXPECT_NE(message(empty).find("empty"), std::string::npos);
+
+    Mesh badIndex = tetrahedron();
+    badIndex.triangles[4] = 7;
+    EXPECT_NE(message(badIndex).find("refers to vertex 7"), std::string::npos);
+
+    Mesh repeated = tetrahedron();
+    repeated.triangles[1] = repeated.triangles[0];
+    EXPECT_NE(message(repeated).find("repeats a vertex"), std::string::npos);
+
+    Mesh flipped = tetrahedron();
+    std::swap(flipped.triangles[1], flipped.triangles[2]);
+    EXPECT_NE(message(flipped).find("inconsistently oriented"), std::string::npos);
+
+    Mesh fin;  // three faces on edge 0-1
+    fin.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
+    fin.triangles = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+    EXPECT_NE(message(fin).find("non-manifold"), std::string::npos);
+
+    Mesh bowtie;  // two triangles sharing only vertex 0
+    bowtie.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, -1, 0};
+    bowtie.triangles = {0, 1, 2, 0, 3, 4};
+    EXPECT_NE(message(bowtie).find("vertex 0 is non-manifold"), std::string::npos);
+
+    Mesh nan = tetrahedron();
+    nan.positions[5] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_NE(message(nan).find("vertex 1 has a non-finite coordinate"), std::string::npos);
+
+    EncodeOptions tooManyBits;
+    tooManyBits.bits = 22;
+    EXPECT_THROW(encode(tetrahedron(), tooManyBits), Error);
+}
+
+}  // namespace
+}  // namespace drm
