@@ -51,7 +51,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
         OpenEdge edge;
         while (traversal.popOpenEdge(edge)) {
             const uint32_t rank = coder.get();
-            if (coder.bytesPastEnd() > 8)
+            if (coder.bytesPastEnd() > 0)
                 throw Error("corrupt file: the connectivity section ends before the last face");
             if (rank >= stats.rankHistogram.size()) {
                 if (rank > vertexCount) throw Error("corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
