@@ -73,7 +73,8 @@ TEST(Predictor, CurvatureBendsOntoThePlaneOfTheNearbyVertices) {
     VertexIndex index(grid);
     Traversal traversal(grid.size() / 3, 4, &index);
     PredictorTuning noScaling;
-    noScaling.slabWidening = -10;  // an empty slab: isolates the curvature step
+    noScaling.slabWidening = -10;      // an empty slab: isolates the curvature step
+    noScaling.curvatureNeighbours = 4;  // the four nearest all lie on the slope
     ApexPredictor predictor(Predictor::Midpoint, true, grid, index, traversal, noScaling);
     const Vec3 p = predictor.predict({0, 1, 2});
     EXPECT_NEAR(p.z, -p.y, 1e-9);

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <random>
 
+#include "drm/drm.h"
 #include "rank_search.h"
 #include "traversal.h"
 #include "vertex_index.h"
@@ -86,7 +89,7 @@ TEST(RankSearch, CulledVerticesAreNotCandidates) {
     VertexIndex index(grid);
     Traversal traversal(6, 4, &index);
     traversal.startComponent(0, 2, 1);
-    const uint32_t apexes[3] = {3, 3, 3};
+    const uint32_t apexes[3] = {3, 1, 3};  // across (0, 2), then (0, 3), then (2, 1)
     OpenEdge edge;
     int attached = 0;
     while (traversal.popOpenEdge(edge)) traversal.attachApex(edge, apexes[attached++]);
