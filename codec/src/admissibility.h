@@ -1,8 +1,7 @@
 // Which vertices may close the triangle across an open edge.
 //
 // This is the one place that decides it, for the ranking and for the
-// predictors' searches alike; encoder and decoder must apply the same rule,
-// and filters that go beyond the paper belong here.
+// predictors' searches alike: encoder and decoder must apply the same rule.
 #ifndef DRM_ADMISSIBILITY_H
 #define DRM_ADMISSIBILITY_H
 
@@ -10,12 +9,34 @@
 
 namespace drm {
 
-// The paper's rule: culled vertices (whose fans are complete) are out. The
-// edge's own ends can never be its apex either; counting them as candidates
-// costs 3-12% (method notes).
-inline bool isAdmissibleApex(uint32_t v, const OpenEdge& edge, const Traversal& traversal) {
-    return v != edge.vi && v != edge.vj && !traversal.isCulled(v);
-}
+class Admissibility {
+public:
+    Admissibility(const Traversal& traversal, bool topologicalFilter)
+        : traversal_(traversal), topologicalFilter_(topologicalFilter) {}
+
+    bool operator()(uint32_t v, const OpenEdge& edge) const {
+        // The paper's rule: culled vertices (whose fans are complete) are
+        // out. The edge's own ends can never be its apex either; counting
+        // them costs 3-12% (method notes).
+        if (v == edge.vi || v == edge.vj || traversal_.isCulled(v)) return false;
+        if (!topologicalFilter_) return true;
+        // The new triangle (vj, vi, v) adds the directed edges vi->v and
+        // v->vj: neither may exist yet, as a rebuilt edge or as the missing
+        // twin of a coded boundary.
+        if (traversal_.thirdVertex(edge.vi, v) != Traversal::kNoTriangle) return false;
+        if (traversal_.thirdVertex(v, edge.vj) != Traversal::kNoTriangle) return false;
+        // The opposite vertex closes the edge only in a two-triangle
+        // component, the back face of the start triangle.
+        if (v == edge.opposite && traversal_.componentTriangleCount() > 1) return false;
+        return true;
+    }
+
+    const Traversal& traversal() const { return traversal_; }
+
+private:
+    const Traversal& traversal_;
+    bool topologicalFilter_;
+};
 
 }  // namespace drm
 

@@ -5,11 +5,10 @@
 
 #include "file_format.h"
 #include "geometry_raw.h"
-#include "predictor.h"
+#include "edge_model.h"
 #include "progress.h"
 #include "quantize.h"
 #include "rank_coder.h"
-#include "rank_search.h"
 #include "traversal.h"
 #include "vertex_index.h"
 
@@ -32,9 +31,9 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     const size_t expectedFaces = std::min<size_t>(faceCount, 4 * vertexCount + 16);
     VertexIndex candidates(result.quantized);
     Traversal traversal(vertexCount, expectedFaces, &candidates);
-    ApexPredictor predict(header.predictor, header.curvature, result.quantized, candidates, traversal);
-    RankSearch ranks(result.quantized, header.grid.bits, candidates, traversal);
-    RankDecoder coder(parts.connectivity, parts.connectivitySize);
+    EdgeModel model(result.quantized, header.grid.bits, header.predictor, header.curvature, header.levers, candidates,
+                    traversal);
+    RankDecoder coder(parts.connectivity, parts.connectivitySize, model.contextCount());
     Stats& stats = result.stats;
 
     progress.stage("decoding connectivity", 0.05);
@@ -50,7 +49,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
         }
         OpenEdge edge;
         while (traversal.popOpenEdge(edge)) {
-            const uint32_t rank = coder.get();
+            const uint32_t rank = coder.get(model.forecast(edge).context);
             if (coder.bytesPastEnd() > 0)
                 throw Error("corrupt file: the connectivity section ends before the last face");
             if (rank >= stats.rankHistogram.size()) {
@@ -66,7 +65,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
                 throw Error("corrupt file: the connectivity section describes more than the header's " +
                             std::to_string(faceCount) + " faces");
             try {
-                traversal.attachApex(edge, ranks.vertexOfRank(predict.predict(edge), rank, edge));
+                traversal.attachApex(edge, model.vertexOfRank(rank, edge));
             } catch (const Error& e) {
                 throw Error("corrupt file: face " + std::to_string(traversal.triangleCount()) + ": " + e.what());
             }
@@ -89,6 +88,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     stats.bits = header.grid.bits;
     stats.predictor = header.predictor;
     stats.curvature = header.curvature;
+    stats.levers = header.levers;
     stats.headerBytes = parts.headerBytes;
     stats.connectivityBytes = parts.connectivitySize;
     stats.geometryBytes = parts.geometrySize;

@@ -6,12 +6,11 @@
 #include "file_format.h"
 #include "geometry_raw.h"
 #include "mesh_check.h"
-#include "predictor.h"
+#include "edge_model.h"
 #include "predictor_selection.h"
 #include "progress.h"
 #include "quantize.h"
 #include "rank_coder.h"
-#include "rank_search.h"
 #include "traversal.h"
 #include "vertex_index.h"
 
@@ -35,9 +34,8 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     const size_t faceCount = mesh.faceCount();
     VertexIndex candidates(result.quantized);
     Traversal traversal(mesh.vertexCount(), faceCount, &candidates);
-    ApexPredictor predict(predictor, options.curvature, result.quantized, candidates, traversal);
-    RankSearch ranks(result.quantized, options.bits, candidates, traversal);
-    RankEncoder coder;
+    EdgeModel model(result.quantized, options.bits, predictor, options.curvature, options.levers, candidates, traversal);
+    RankEncoder coder(model.contextCount());
 
     FileHeader header;
     header.vertexCount = mesh.vertexCount();
@@ -45,6 +43,7 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     header.grid = result.grid;
     header.predictor = predictor;
     header.curvature = options.curvature;
+    header.levers = options.levers;
     Stats& stats = result.stats;
 
     result.faceRank.assign(faceCount, 0);
@@ -64,18 +63,19 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
             uint32_t face = 0;
             const uint32_t apex = topology.apexAcross(edge.vi, edge.vj, &face);
             uint32_t rank = 0;
+            const int context = model.forecast(edge).context;
             if (apex == HalfEdgeMap::kAbsent) {
                 traversal.closeAsBoundary(edge);
             } else {
                 if (traversal.isCulled(apex))
                     throw Error("internal error: the apex of face " + std::to_string(face) + " was culled too early");
-                rank = ranks.rankOf(predict.predict(edge), apex, edge);
+                rank = model.rankOf(apex, edge);
                 traversal.attachApex(edge, apex);
                 attached[face] = 1;
                 result.faceRank[face] = rank;
                 ++attachedCount;
             }
-            coder.put(rank);
+            coder.put(rank, context);
             if (rank >= stats.rankHistogram.size()) stats.rankHistogram.resize(size_t(rank) + 1, 0);
             ++stats.rankHistogram[rank];
             progress.tick(0.05 + 0.9 * double(attachedCount) / double(faceCount));
@@ -97,6 +97,7 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     stats.bits = options.bits;
     stats.predictor = predictor;
     stats.curvature = options.curvature;
+    stats.levers = options.levers;
     stats.headerBytes = headerBytes;
     stats.connectivityBytes = connectivity.size();
     stats.geometryBytes = geometry.size();

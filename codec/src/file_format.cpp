@@ -22,7 +22,9 @@ void writeSection(ByteWriter& out, const std::vector<uint8_t>& payload) {
 
 std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     ByteWriter out;
-    out.u16(h.curvature ? kFlagCurvature : 0);
+    out.u16(uint16_t((h.curvature ? kFlagCurvature : 0) | (h.levers.topologicalFilter ? kFlagTopologicalFilter : 0) |
+                     (h.levers.gapClosing ? kFlagGapClosing : 0) |
+                     (h.levers.confidenceContext ? kFlagConfidenceContext : 0)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
     out.u8(uint8_t(h.connectivityCoder));
@@ -39,8 +41,11 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
 FileHeader decodeHeader(ByteReader& in) {
     FileHeader h;
     const uint16_t flags = in.u16("flags");
-    if (flags & ~kFlagCurvature) throw Error("corrupt file: unknown header flags " + std::to_string(flags));
+    if (flags & ~kKnownFlags) throw Error("corrupt file: unknown header flags " + std::to_string(flags));
     h.curvature = (flags & kFlagCurvature) != 0;
+    h.levers.topologicalFilter = (flags & kFlagTopologicalFilter) != 0;
+    h.levers.gapClosing = (flags & kFlagGapClosing) != 0;
+    h.levers.confidenceContext = (flags & kFlagConfidenceContext) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
         throw Error("corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");

@@ -18,6 +18,10 @@ enum class ConnectivityCoder : uint8_t { RankRangeCoder = 1 };
 enum class GeometryCoder : uint8_t { RawGrid = 1 };
 
 constexpr uint16_t kFlagCurvature = 1;
+constexpr uint16_t kFlagTopologicalFilter = 2;
+constexpr uint16_t kFlagGapClosing = 4;
+constexpr uint16_t kFlagConfidenceContext = 8;
+constexpr uint16_t kKnownFlags = 15;
 
 struct FileHeader {
     uint64_t vertexCount = 0;
@@ -25,6 +29,7 @@ struct FileHeader {
     Grid grid;
     Predictor predictor = Predictor::Midpoint;
     bool curvature = false;
+    Levers levers;
     ConnectivityCoder connectivityCoder = ConnectivityCoder::RankRangeCoder;
     GeometryCoder geometryCoder = GeometryCoder::RawGrid;
     std::vector<uint32_t> startTriangles;  // 3 vertex indices per component

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <utility>
 
-#include "admissibility.h"
 #include "quantize.h"
 #include "vertex_index.h"
 
@@ -35,13 +34,9 @@ Vec3 baseApex(Predictor kind, Vec3 a, Vec3 b, Vec3 o) {
 }
 
 ApexPredictor::ApexPredictor(Predictor kind, bool curvature, const std::vector<int32_t>& grid,
-                             const VertexIndex& candidates, const Traversal& traversal, PredictorTuning tuning)
-    : kind_(kind), curvature_(curvature), grid_(grid), candidates_(candidates), traversal_(traversal),
+                             const VertexIndex& candidates, const Admissibility& admissible, PredictorTuning tuning)
+    : kind_(kind), curvature_(curvature), grid_(grid), candidates_(candidates), usable_(admissible),
       tuning_(tuning) {}
-
-bool ApexPredictor::usable(uint32_t v, const OpenEdge& edge) const {
-    return isAdmissibleApex(v, edge, traversal_);
-}
 
 Vec3 ApexPredictor::predict(const OpenEdge& edge) {
     const Vec3 a = gridPoint(grid_, edge.vi), b = gridPoint(grid_, edge.vj);
@@ -61,7 +56,7 @@ Vec3 ApexPredictor::bendOntoSurface(Vec3 p, Vec3 a, Vec3 b, const OpenEdge& edge
     std::vector<std::pair<double, uint32_t>> byDistance;
     byDistance.reserve(nearby_.size());
     for (uint32_t v : nearby_) {
-        if (!usable(v, edge)) continue;
+        if (!usable_(v, edge)) continue;
         const double d2 = norm2(gridPoint(grid_, v) - p);
         if (d2 <= radius * radius) byDistance.emplace_back(d2, v);
     }
@@ -101,7 +96,7 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
         uint32_t first = 0;
         bool found = false;
         for (uint32_t v : nearby_) {
-            if (!usable(v, edge)) continue;
+            if (!usable_(v, edge)) continue;
             const Vec3 x = gridPoint(grid_, v) - mid;
             if (norm2(x) > radius * radius) continue;
             const double h = dot(x, ahead);

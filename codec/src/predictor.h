@@ -13,6 +13,7 @@
 
 #include "drm/drm.h"
 #include "exact_math.h"
+#include "admissibility.h"
 #include "traversal.h"
 
 namespace drm {
@@ -38,7 +39,7 @@ struct PredictorTuning {
 class ApexPredictor {
 public:
     ApexPredictor(Predictor kind, bool curvature, const std::vector<int32_t>& grid, const VertexIndex& candidates,
-                  const Traversal& traversal, PredictorTuning tuning = PredictorTuning());
+                  const Admissibility& admissible, PredictorTuning tuning = PredictorTuning());
 
     // The predicted apex of the triangle across edge, in grid units.
     Vec3 predict(const OpenEdge& edge);
@@ -46,13 +47,12 @@ public:
 private:
     Vec3 bendOntoSurface(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
     Vec3 scaleToFirstVertexAhead(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
-    bool usable(uint32_t v, const OpenEdge& edge) const;
 
     Predictor kind_;
     bool curvature_;
     const std::vector<int32_t>& grid_;
     const VertexIndex& candidates_;
-    const Traversal& traversal_;
+    const Admissibility& usable_;
     PredictorTuning tuning_;
     std::vector<uint32_t> nearby_;  // scratch, reused by every query
 };

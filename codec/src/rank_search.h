@@ -3,7 +3,9 @@
 // The predicted point is snapped to a fixed-point grid (1/16 of a
 // quantization step) and distances are squared integers in 64 bits, so the
 // order is the same on every machine; equal distances are ordered by vertex
-// index. Rank 1 is the nearest admissible vertex.
+// index. Rank 1 is the nearest admissible vertex, unless a vertex is
+// `preferred` (gap closing): then it has rank 1 and the distance order
+// follows from rank 2.
 #ifndef DRM_RANK_SEARCH_H
 #define DRM_RANK_SEARCH_H
 
@@ -11,12 +13,14 @@
 #include <utility>
 #include <vector>
 
+#include "admissibility.h"
 #include "exact_math.h"
-#include "traversal.h"
 
 namespace drm {
 
 class VertexIndex;
+
+constexpr uint32_t kNoPreference = 0xFFFFFFFFu;
 
 struct FixedPoint {
     int64_t x = 0, y = 0, z = 0;
@@ -26,18 +30,26 @@ struct FixedPoint {
 // box so that squared distances cannot overflow.
 FixedPoint snapPrediction(Vec3 prediction, int bits);
 
+// (squared fixed-point distance, vertex), ordered as ranks are.
+using RankedVertex = std::pair<int64_t, uint32_t>;
+
 class RankSearch {
 public:
     RankSearch(const std::vector<int32_t>& grid, int bits, const VertexIndex& candidates,
-               const Traversal& traversal);
+               const Admissibility& admissible);
 
-    // Encoder: the rank of apex among the admissible vertices around the
-    // prediction (1 = nearest).
-    uint32_t rankOf(Vec3 prediction, uint32_t apex, const OpenEdge& edge);
+    // Encoder: the rank of apex (>= 1).
+    uint32_t rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred = kNoPreference);
 
-    // Decoder: the admissible vertex of the given rank (>= 1). Throws Error
-    // if fewer admissible vertices exist.
-    uint32_t vertexOfRank(Vec3 prediction, uint32_t rank, const OpenEdge& edge);
+    // Decoder: the vertex of the given rank (>= 1). Throws Error if there
+    // are fewer admissible vertices.
+    uint32_t vertexOfRank(const FixedPoint& p, uint32_t rank, const OpenEdge& edge,
+                          uint32_t preferred = kNoPreference);
+
+    // The `count` admissible vertices nearest p other than `skip`, nearest
+    // first; fewer if fewer exist.
+    const std::vector<RankedVertex>& nearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
+                                             uint32_t skip = kNoPreference);
 
     int64_t distance2(const FixedPoint& p, uint32_t v) const;
 
@@ -45,9 +57,9 @@ private:
     const std::vector<int32_t>& grid_;
     int bits_;
     const VertexIndex& candidates_;
-    const Traversal& traversal_;
+    const Admissibility& admissible_;
     std::vector<uint32_t> nearby_;
-    std::vector<std::pair<int64_t, uint32_t>> ranked_;
+    std::vector<RankedVertex> ranked_;
 };
 
 }  // namespace drm

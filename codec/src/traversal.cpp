@@ -26,6 +26,7 @@ void Traversal::startComponent(uint32_t a, uint32_t b, uint32_t c) {
             throw Error("start triangle uses vertex " + std::to_string(v) + ", which an earlier component already uses");
     }
     if (a == b || b == c || a == c) throw Error("start triangle repeats vertex " + std::to_string(a == b ? a : c));
+    componentStart_ = triangleCount();
     // The paper pushes the three edges in order to the back; (a, b) is popped first.
     addHalfEdge(a, b, c);
     addHalfEdge(b, c, a);

@@ -47,6 +47,16 @@ public:
     // vertex (only a corrupt stream can ask for that).
     void attachApex(const OpenEdge& edge, uint32_t apex);
 
+    // The third vertex of the rebuilt triangle holding the directed edge
+    // (a, b); kNoTriangle if there is none, kBoundary if (b, a) was coded
+    // as a boundary edge (so (a, b) is its missing twin).
+    static constexpr uint32_t kNoTriangle = HalfEdgeMap::kAbsent;
+    static constexpr uint32_t kBoundary = 0xFFFFFFFEu;
+    uint32_t thirdVertex(uint32_t a, uint32_t b) const { return halfEdges_.find(a, b); }
+
+    // Triangles of the component being rebuilt (the start triangle counts).
+    size_t componentTriangleCount() const { return triangleCount() - componentStart_; }
+
     bool isCulled(uint32_t v) const { return state_[v] == kCulled; }
     bool isTouched(uint32_t v) const { return state_[v] != kUntouched; }
     size_t vertexCount() const { return openEdges_.size(); }
@@ -57,7 +67,6 @@ public:
 
 private:
     enum : uint8_t { kUntouched = 0, kActive = 1, kCulled = 2 };
-    static constexpr uint32_t kBoundary = 0xFFFFFFFEu;
 
     void addHalfEdge(uint32_t a, uint32_t b, uint32_t opposite);
     void releaseIfDone(uint32_t v);
@@ -69,6 +78,7 @@ private:
     std::vector<uint8_t> state_;
     std::deque<uint64_t> queue_;       // packed directed edges (vi, vj)
     std::vector<uint32_t> triangles_;
+    size_t componentStart_ = 0;  // triangle count when the current component began
     VertexIndex* candidates_;
 };
 

@@ -45,12 +45,13 @@ struct Fan {
     std::vector<int32_t> grid = {0, 0, 0, 4, 0, 0, 2, 3, 0, 2, -6, 0, 30, -2, 0};
     VertexIndex index{grid};
     Traversal traversal{5, 4, &index};
+    Admissibility admissible{traversal, false};
     OpenEdge edge{0, 1, 2};
 };
 
 TEST(Predictor, SizeCorrectionScalesToTheFirstVertexAhead) {
     Fan fan;
-    ApexPredictor predictor(Predictor::Midpoint, false, fan.grid, fan.index, fan.traversal);
+    ApexPredictor predictor(Predictor::Midpoint, false, fan.grid, fan.index, fan.admissible);
     const Vec3 p = predictor.predict(fan.edge);
     // Vertex 4 at y = -2 lies outside the slab (x = 30); vertex 3 at y = -6 is the first ahead.
     EXPECT_NEAR(p.y, -6.0, 1e-9);
@@ -60,7 +61,8 @@ TEST(Predictor, SizeCorrectionLeavesThePredictionAloneWithNothingAhead) {
     std::vector<int32_t> grid = {0, 0, 0, 4, 0, 0, 2, 3, 0};
     VertexIndex index(grid);
     Traversal traversal(3, 1, &index);
-    ApexPredictor predictor(Predictor::Midpoint, false, grid, index, traversal);
+    Admissibility admissible(traversal, false);
+    ApexPredictor predictor(Predictor::Midpoint, false, grid, index, admissible);
     expectNear(predictor.predict({0, 1, 2}), midpointApex({0, 0, 0}, {4, 0, 0}, {2, 3, 0}));
 }
 
@@ -75,7 +77,8 @@ TEST(Predictor, CurvatureBendsOntoThePlaneOfTheNearbyVertices) {
     PredictorTuning noScaling;
     noScaling.slabWidening = -10;      // an empty slab: isolates the curvature step
     noScaling.curvatureNeighbours = 4;  // the four nearest all lie on the slope
-    ApexPredictor predictor(Predictor::Midpoint, true, grid, index, traversal, noScaling);
+    Admissibility admissible(traversal, false);
+    ApexPredictor predictor(Predictor::Midpoint, true, grid, index, admissible, noScaling);
     const Vec3 p = predictor.predict({0, 1, 2});
     EXPECT_NEAR(p.z, -p.y, 1e-9);
     EXPECT_LT(p.y, 0.0);

@@ -19,6 +19,7 @@ struct Scene {
     std::vector<int32_t> grid;
     std::unique_ptr<VertexIndex> index;
     std::unique_ptr<Traversal> traversal;
+    std::unique_ptr<Admissibility> admissible;
 };
 
 Scene randomScene(std::mt19937& rng, size_t count, int extent) {
@@ -27,12 +28,13 @@ Scene randomScene(std::mt19937& rng, size_t count, int extent) {
     for (size_t i = 0; i < 3 * count; ++i) s.grid.push_back(coord(rng));
     s.index.reset(new VertexIndex(s.grid));
     s.traversal.reset(new Traversal(count, 4, s.index.get()));
+    s.admissible.reset(new Admissibility(*s.traversal, false));
     return s;
 }
 
 // All admissible vertices ordered by (exact fixed-point distance, index).
 std::vector<uint32_t> bruteForceOrder(const Scene& s, RankSearch& search, Vec3 prediction, const OpenEdge& edge,
-                                      int bits) {
+                                      int bits) {  // written against the definition, not the search
     const FixedPoint p = snapPrediction(prediction, bits);
     std::vector<std::pair<int64_t, uint32_t>> all;
     for (uint32_t v = 0; v < s.grid.size() / 3; ++v)
@@ -48,7 +50,7 @@ TEST(RankSearch, MatchesBruteForceWithManyTies) {
     const int bits = 12;
     for (int trial = 0; trial < 20; ++trial) {
         Scene s = randomScene(rng, 400, 12);  // 400 points on a 13^3 grid: many duplicates and ties
-        RankSearch search(s.grid, bits, *s.index, *s.traversal);
+        RankSearch search(s.grid, bits, *s.index, *s.admissible);
         std::uniform_real_distribution<double> at(-3.0, 15.0);
         for (int q = 0; q < 30; ++q) {
             OpenEdge edge{uint32_t(rng() % 400), uint32_t(rng() % 400), 0};
@@ -57,11 +59,20 @@ TEST(RankSearch, MatchesBruteForceWithManyTies) {
             Vec3 p{at(rng), at(rng), at(rng)};
             if (q % 2) p = {std::floor(p.x * 2) / 2, std::floor(p.y * 2) / 2, std::floor(p.z * 2) / 2};
             const std::vector<uint32_t> order = bruteForceOrder(s, search, p, edge, bits);
+            const FixedPoint fp = snapPrediction(p, bits);
             for (size_t k = 0; k < order.size(); k += 1 + k / 8) {
-                EXPECT_EQ(search.rankOf(p, order[k], edge), k + 1) << "trial " << trial << " query " << q;
-                EXPECT_EQ(search.vertexOfRank(p, uint32_t(k + 1), edge), order[k]);
+                EXPECT_EQ(search.rankOf(fp, order[k], edge), k + 1) << "trial " << trial << " query " << q;
+                EXPECT_EQ(search.vertexOfRank(fp, uint32_t(k + 1), edge), order[k]);
             }
-            EXPECT_THROW(search.vertexOfRank(p, uint32_t(order.size() + 1), edge), Error);
+            EXPECT_THROW(search.vertexOfRank(fp, uint32_t(order.size() + 1), edge), Error);
+            // A preferred vertex takes rank 1 and shifts the others by one.
+            const uint32_t preferred = order[order.size() / 2];
+            EXPECT_EQ(search.rankOf(fp, preferred, edge, preferred), 1u);
+            EXPECT_EQ(search.vertexOfRank(fp, 1, edge, preferred), preferred);
+            EXPECT_EQ(search.rankOf(fp, order[0], edge, preferred), 2u);
+            EXPECT_EQ(search.vertexOfRank(fp, 2, edge, preferred), order[0]);
+            const uint32_t last = order.back() == preferred ? order[order.size() - 2] : order.back();
+            EXPECT_EQ(search.vertexOfRank(fp, search.rankOf(fp, last, edge, preferred), edge, preferred), last);
         }
     }
 }
@@ -70,14 +81,15 @@ TEST(RankSearch, FarPredictionsAndLargeGrids) {
     std::mt19937 rng(7);
     const int bits = 21;
     Scene s = randomScene(rng, 300, (1 << bits) - 1);
-    RankSearch search(s.grid, bits, *s.index, *s.traversal);
+    RankSearch search(s.grid, bits, *s.index, *s.admissible);
     const OpenEdge edge{0, 1, 2};
     // Predictions far outside the box are clamped, never overflow.
     for (Vec3 p : {Vec3{-1e12, 5, 5}, Vec3{3e9, -4e9, 1e10}, Vec3{1048576.25, 7.5, 2097151}}) {
         const std::vector<uint32_t> order = bruteForceOrder(s, search, p, edge, bits);
+        const FixedPoint fp = snapPrediction(p, bits);
         for (size_t k = 0; k < order.size(); k += 17) {
-            EXPECT_EQ(search.rankOf(p, order[k], edge), k + 1);
-            EXPECT_EQ(search.vertexOfRank(p, uint32_t(k + 1), edge), order[k]);
+            EXPECT_EQ(search.rankOf(fp, order[k], edge), k + 1);
+            EXPECT_EQ(search.vertexOfRank(fp, uint32_t(k + 1), edge), order[k]);
         }
     }
 }
@@ -96,12 +108,13 @@ TEST(RankSearch, CulledVerticesAreNotCandidates) {
     EXPECT_EQ(traversal.triangleCount(), 4u);
     for (uint32_t v = 0; v < 4; ++v) EXPECT_TRUE(traversal.isCulled(v));
     EXPECT_EQ(index.presentCount(), 2u);
-    RankSearch search(grid, 12, index, traversal);
+    Admissibility admissible(traversal, false);
+    RankSearch search(grid, 12, index, admissible);
     const OpenEdge loose{4, 5, 4};  // an edge that is not in the mesh: only candidates matter
-    EXPECT_THROW(search.vertexOfRank({0, 0, 0}, 1, loose), Error);
+    EXPECT_THROW(search.vertexOfRank(FixedPoint(), 1, loose), Error);
     const OpenEdge other{0, 1, 2};
-    EXPECT_EQ(search.vertexOfRank({0, 0, 0}, 1, other), 4u);
-    EXPECT_EQ(search.vertexOfRank({0, 0, 0}, 2, other), 5u);
+    EXPECT_EQ(search.vertexOfRank(FixedPoint(), 1, other), 4u);
+    EXPECT_EQ(search.vertexOfRank(FixedPoint(), 2, other), 5u);
 }
 
 }  // namespace

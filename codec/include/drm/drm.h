@@ -52,10 +52,28 @@ Predictor parsePredictor(const std::string& name);
 // of the current stage. Return false to cancel (the call then throws Error).
 using Progress = std::function<bool(double fraction, const char* stage)>;
 
+// Additions to the paper's method, each decoder-reproducible and recorded in
+// the file. All on by default; all off gives the paper's method as published.
+struct Levers {
+    // Candidates that cannot close the triangle for topological reasons
+    // (the edge's opposite vertex, vertices whose new edges would reuse a
+    // rebuilt directed edge or a coded boundary) are not ranked.
+    bool topologicalFilter = true;
+    // When an end of the edge has a narrow gap left in its fan (under 60
+    // degrees), the vertex closing that gap gets rank 1.
+    bool gapClosing = true;
+    // Ranks are coded in contexts bucketed by how clear-cut the nearest
+    // candidate is (ratio of the two nearest candidate distances).
+    bool confidenceContext = true;
+
+    static Levers none() { return Levers{false, false, false}; }
+};
+
 struct EncodeOptions {
     int bits = 12;                          // quantization bits per axis, 1..21
     Predictor predictor = Predictor::Auto;
     bool curvature = false;                 // the paper's curvature correction
+    Levers levers;
     Progress progress;                      // may be empty
 };
 
@@ -70,6 +88,7 @@ struct Stats {
     int bits = 0;
     Predictor predictor = Predictor::Midpoint;  // the one used (never Auto)
     bool curvature = false;
+    Levers levers;
     uint64_t headerBytes = 0;
     uint64_t connectivityBytes = 0;
     uint64_t geometryBytes = 0;

@@ -1,0 +1,51 @@
+// Everything encoder and decoder compute about one open edge before its rank
+// is coded: the predicted apex, the gap-closing vertex, the coder context.
+// Both sides call the same code, so they cannot drift apart; they differ only
+// in turning apex -> rank (encoder) or rank -> apex (decoder).
+#ifndef DRM_EDGE_MODEL_H
+#define DRM_EDGE_MODEL_H
+
+#include <vector>
+
+#include "admissibility.h"
+#include "drm/drm.h"
+#include "predictor.h"
+#include "rank_search.h"
+
+namespace drm {
+
+class VertexIndex;
+
+struct EdgeForecast {
+    FixedPoint prediction;
+    uint32_t preferred = kNoPreference;  // gap-closing vertex, rank 1 when present
+    int context = 0;                     // coder context, < EdgeModel::contextCount()
+    std::vector<RankedVertex> nearest;   // the two nearest candidates (confidence lever only)
+};
+
+class EdgeModel {
+public:
+    EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature, const Levers& levers,
+              const VertexIndex& candidates, const Traversal& traversal);
+
+    // How many coder contexts forecasts use (for the rank coder).
+    int contextCount() const { return levers_.confidenceContext ? 5 : 1; }
+
+    const EdgeForecast& forecast(const OpenEdge& edge);
+    // Both use the forecast made last, for the same edge.
+    uint32_t rankOf(uint32_t apex, const OpenEdge& edge);
+    uint32_t vertexOfRank(uint32_t rank, const OpenEdge& edge);
+
+private:
+    const std::vector<int32_t>& grid_;
+    int bits_;
+    Levers levers_;
+    Admissibility admissible_;
+    ApexPredictor predictor_;
+    RankSearch ranks_;
+    EdgeForecast forecast_;
+};
+
+}  // namespace drm
+
+#endif  // DRM_EDGE_MODEL_H
