@@ -31,8 +31,8 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     const size_t expectedFaces = std::min<size_t>(faceCount, 4 * vertexCount + 16);
     VertexIndex candidates(result.quantized);
     Traversal traversal(vertexCount, expectedFaces, &candidates);
-    EdgeModel model(result.quantized, header.grid.bits, header.predictor, header.curvature, header.levers, candidates,
-                    traversal);
+    EdgeModel model(result.quantized, header.grid.bits, header.predictor, header.curvature, header.levers,
+                    header.faceCount, candidates, traversal);
     RankDecoder coder(parts.connectivity, parts.connectivitySize, model.contextCount());
     Stats& stats = result.stats;
 

@@ -25,11 +25,13 @@ struct EdgeForecast {
 
 class EdgeModel {
 public:
+    // faceCount sets how finely the coder contexts split (small meshes
+    // cannot teach many contexts).
     EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature, const Levers& levers,
-              const VertexIndex& candidates, const Traversal& traversal);
+              uint64_t faceCount, const VertexIndex& candidates, const Traversal& traversal);
 
     // How many coder contexts forecasts use (for the rank coder).
-    int contextCount() const { return levers_.confidenceContext ? 5 : 1; }
+    int contextCount() const;
 
     const EdgeForecast& forecast(const OpenEdge& edge);
     // Both use the forecast made last, for the same edge.
@@ -40,6 +42,7 @@ private:
     const std::vector<int32_t>& grid_;
     int bits_;
     Levers levers_;
+    bool fineBuckets_;
     Admissibility admissible_;
     ApexPredictor predictor_;
     RankSearch ranks_;

@@ -34,7 +34,8 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     const size_t faceCount = mesh.faceCount();
     VertexIndex candidates(result.quantized);
     Traversal traversal(mesh.vertexCount(), faceCount, &candidates);
-    EdgeModel model(result.quantized, options.bits, predictor, options.curvature, options.levers, candidates, traversal);
+    EdgeModel model(result.quantized, options.bits, predictor, options.curvature, options.levers, faceCount,
+                    candidates, traversal);
     RankEncoder coder(model.contextCount());
 
     FileHeader header;
