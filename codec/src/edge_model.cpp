@@ -1,10 +1,14 @@
 #include "edge_model.h"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include "gap_closing.h"
+#include "quantize.h"
 
 namespace drm {
 namespace {
-
 
 // Confidence of the distance order: the ratio of the two nearest candidate
 // distances (method notes). A clear winner (small ratio) makes rank 1 far
@@ -14,6 +18,10 @@ namespace {
 // 128 bits, exactly: r < t  <=>  d1 * 10000 < d2 * (100 t)^2.
 constexpr int kMaxConfidenceBuckets = 6;
 constexpr uint64_t kFineBucketsFromFaces = 4096;
+// Gap-closing edges get two contexts of their own: the gap vertex is, or is
+// not, also the nearest candidate.
+constexpr int kGapContext = kMaxConfidenceBuckets;
+constexpr size_t kAngleOrdered = 3;
 
 int confidenceBucket(const std::vector<RankedVertex>& nearest, bool fine) {
     static const int kFine[kMaxConfidenceBuckets - 1] = {400, 1600, 3600, 5625, 8100};  // 0.2 0.4 0.6 0.75 0.9
@@ -26,11 +34,16 @@ int confidenceBucket(const std::vector<RankedVertex>& nearest, bool fine) {
     while (bucket < count && !(d1 * 10000 < d2 * limits[bucket])) ++bucket;
     return bucket;
 }
-constexpr int kGapContext = kMaxConfidenceBuckets;  // and kGapContext + 1
+
+// Cosine of the angle at v subtended by the edge (a, b); 1 (no angle) when v
+// coincides with an end.
+double cosineSubtended(Vec3 a, Vec3 b, Vec3 v) {
+    const Vec3 u = a - v, w = b - v;
+    const double uu = norm2(u), ww = norm2(w);
+    return uu == 0 || ww == 0 ? 1.0 : dot(u, w) / std::sqrt(uu * ww);
+}
 
 }  // namespace
-
-int EdgeModel::contextCount() const { return levers_.confidenceContext ? kGapContext + 2 : 1; }
 
 EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature,
                      const Levers& levers, uint64_t faceCount, const VertexIndex& candidates,
@@ -43,27 +56,42 @@ EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predi
       predictor_(predictor, curvature, grid, candidates, admissible_),
       ranks_(grid, bits, candidates, admissible_) {}
 
+int EdgeModel::contextCount() const { return levers_.confidenceContext ? kGapContext + 2 : 1; }
+
 const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
-    forecast_.prediction = snapPrediction(predictor_.predict(edge), bits_);
-    forecast_.preferred = levers_.gapClosing ? gapClosingVertex(edge, grid_, admissible_) : kNoPreference;
-    forecast_.context = 0;
-    forecast_.nearest.clear();
-    if (levers_.confidenceContext) {
-        if (forecast_.preferred != kNoPreference) {
-            // Whether the gap vertex is also the nearest candidate says how
-            // sure the gap closing is.
-            const std::vector<RankedVertex>& first = ranks_.nearest(forecast_.prediction, 1, edge);
-            forecast_.context = kGapContext + (!first.empty() && first[0].second == forecast_.preferred ? 0 : 1);
-        } else {
-            forecast_.nearest = ranks_.nearest(forecast_.prediction, 2, edge);
-            forecast_.context = confidenceBucket(forecast_.nearest, fineBuckets_);
+    EdgeForecast& f = forecast_;
+    f.prediction = snapPrediction(predictor_.predict(edge), bits_);
+    f.preferred = levers_.gapClosing ? gapClosingVertex(edge, grid_, admissible_) : kNoPreference;
+    f.context = 0;
+    f.nearest.clear();
+    if (f.preferred != kNoPreference) {
+        if (levers_.confidenceContext) {
+            const std::vector<RankedVertex>& first = ranks_.nearest(f.prediction, 1, edge);
+            f.context = kGapContext + (!first.empty() && first[0].second == f.preferred ? 0 : 1);
         }
+        return f;
     }
-    return forecast_;
+    if (!levers_.confidenceContext && !levers_.angleOrder) return f;
+    f.nearest = ranks_.nearest(f.prediction, levers_.angleOrder ? kAngleOrdered : 2, edge);
+    if (levers_.confidenceContext) f.context = confidenceBucket(f.nearest, fineBuckets_);
+    if (levers_.angleOrder) {
+        const Vec3 a = gridPoint(grid_, edge.vi), b = gridPoint(grid_, edge.vj);
+        std::vector<std::pair<double, RankedVertex>> byAngle;
+        for (const RankedVertex& r : f.nearest) byAngle.emplace_back(cosineSubtended(a, b, gridPoint(grid_, r.second)), r);
+        // Largest angle (smallest cosine) first; equal angles keep distance order.
+        std::stable_sort(byAngle.begin(), byAngle.end(),
+                         [](const std::pair<double, RankedVertex>& x, const std::pair<double, RankedVertex>& y) {
+                             return x.first < y.first;
+                         });
+        for (size_t k = 0; k < byAngle.size(); ++k) f.nearest[k] = byAngle[k].second;
+    }
+    return f;
 }
 
+// The nearest candidates, when the forecast holds them, take the first ranks
+// in the forecast's order; every other vertex is ranked by distance after
+// them (all of them are nearer than it, so the counts agree).
 uint32_t EdgeModel::rankOf(uint32_t apex, const OpenEdge& edge) {
-    // The two nearest are known already when the context needed them.
     for (size_t k = 0; k < forecast_.nearest.size(); ++k)
         if (forecast_.nearest[k].second == apex) return uint32_t(k + 1);
     return ranks_.rankOf(forecast_.prediction, apex, edge, forecast_.preferred);

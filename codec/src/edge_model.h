@@ -20,7 +20,7 @@ struct EdgeForecast {
     FixedPoint prediction;
     uint32_t preferred = kNoPreference;  // gap-closing vertex, rank 1 when present
     int context = 0;                     // coder context, < EdgeModel::contextCount()
-    std::vector<RankedVertex> nearest;   // the two nearest candidates (confidence lever only)
+    std::vector<RankedVertex> nearest;   // the nearest candidates, in rank order (confidence / angle levers)
 };
 
 class EdgeModel {

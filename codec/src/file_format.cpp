@@ -24,7 +24,8 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     ByteWriter out;
     out.u16(uint16_t((h.curvature ? kFlagCurvature : 0) | (h.levers.topologicalFilter ? kFlagTopologicalFilter : 0) |
                      (h.levers.gapClosing ? kFlagGapClosing : 0) |
-                     (h.levers.confidenceContext ? kFlagConfidenceContext : 0)));
+                     (h.levers.confidenceContext ? kFlagConfidenceContext : 0) |
+                     (h.levers.angleOrder ? kFlagAngleOrder : 0)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
     out.u8(uint8_t(h.connectivityCoder));
@@ -46,6 +47,7 @@ FileHeader decodeHeader(ByteReader& in) {
     h.levers.topologicalFilter = (flags & kFlagTopologicalFilter) != 0;
     h.levers.gapClosing = (flags & kFlagGapClosing) != 0;
     h.levers.confidenceContext = (flags & kFlagConfidenceContext) != 0;
+    h.levers.angleOrder = (flags & kFlagAngleOrder) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
         throw Error("corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");

@@ -21,7 +21,8 @@ constexpr uint16_t kFlagCurvature = 1;
 constexpr uint16_t kFlagTopologicalFilter = 2;
 constexpr uint16_t kFlagGapClosing = 4;
 constexpr uint16_t kFlagConfidenceContext = 8;
-constexpr uint16_t kKnownFlags = 15;
+constexpr uint16_t kFlagAngleOrder = 16;
+constexpr uint16_t kKnownFlags = 31;
 
 struct FileHeader {
     uint64_t vertexCount = 0;

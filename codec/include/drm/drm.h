@@ -65,8 +65,12 @@ struct Levers {
     // Ranks are coded in contexts bucketed by how clear-cut the nearest
     // candidate is (ratio of the two nearest candidate distances).
     bool confidenceContext = true;
+    // The three nearest candidates are ranked by the angle they subtend over
+    // the edge, largest first (the apex of a Delaunay-like triangulation
+    // sees the edge under the largest angle); the rest by distance.
+    bool angleOrder = true;
 
-    static Levers none() { return Levers{false, false, false}; }
+    static Levers none() { return Levers{false, false, false, false}; }
 };
 
 struct EncodeOptions {
