@@ -21,6 +21,11 @@ constexpr uint64_t kFineBucketsFromFaces = 4096;
 // Gap-closing edges get two contexts of their own: the gap vertex is, or is
 // not, also the nearest candidate.
 constexpr int kGapContext = kMaxConfidenceBuckets;
+constexpr int kDistanceContexts = kGapContext + 2;
+// With angle order, every distance context comes twice: the angle order's
+// first candidate is, or is not, also the nearest one.
+constexpr int kDisagreementOffset = kDistanceContexts;
+// Three: measured against 2 (worse on all but fandisk), 4 and 6 (worse on all).
 constexpr size_t kAngleOrdered = 3;
 
 int confidenceBucket(const std::vector<RankedVertex>& nearest, bool fine) {
@@ -36,7 +41,8 @@ int confidenceBucket(const std::vector<RankedVertex>& nearest, bool fine) {
 }
 
 // Cosine of the angle at v subtended by the edge (a, b); 1 (no angle) when v
-// coincides with an end.
+// coincides with an end. Candidates behind the edge, on the side of the
+// rebuilt triangle, get 4 added so that they follow every candidate ahead.
 double cosineSubtended(Vec3 a, Vec3 b, Vec3 v) {
     const Vec3 u = a - v, w = b - v;
     const double uu = norm2(u), ww = norm2(w);
@@ -56,7 +62,7 @@ EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predi
       predictor_(predictor, curvature, grid, candidates, admissible_),
       ranks_(grid, bits, candidates, admissible_) {}
 
-int EdgeModel::contextCount() const { return levers_.confidenceContext ? kGapContext + 2 : 1; }
+int EdgeModel::contextCount() const { return levers_.confidenceContext ? 2 * kDistanceContexts : 1; }
 
 const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     EdgeForecast& f = forecast_;
@@ -74,18 +80,30 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     if (!levers_.confidenceContext && !levers_.angleOrder) return f;
     f.nearest = ranks_.nearest(f.prediction, levers_.angleOrder ? kAngleOrdered : 2, edge);
     if (levers_.confidenceContext) f.context = confidenceBucket(f.nearest, fineBuckets_);
-    if (levers_.angleOrder) {
-        const Vec3 a = gridPoint(grid_, edge.vi), b = gridPoint(grid_, edge.vj);
-        std::vector<std::pair<double, RankedVertex>> byAngle;
-        for (const RankedVertex& r : f.nearest) byAngle.emplace_back(cosineSubtended(a, b, gridPoint(grid_, r.second)), r);
-        // Largest angle (smallest cosine) first; equal angles keep distance order.
-        std::stable_sort(byAngle.begin(), byAngle.end(),
-                         [](const std::pair<double, RankedVertex>& x, const std::pair<double, RankedVertex>& y) {
-                             return x.first < y.first;
-                         });
-        for (size_t k = 0; k < byAngle.size(); ++k) f.nearest[k] = byAngle[k].second;
+    if (levers_.angleOrder && !f.nearest.empty()) {
+        const uint32_t nearestByDistance = f.nearest[0].second;
+        orderByAngle(edge, f.nearest);
+        if (levers_.confidenceContext && f.nearest[0].second != nearestByDistance) f.context += kDisagreementOffset;
     }
     return f;
+}
+
+void EdgeModel::orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& nearest) const {
+    const Vec3 a = gridPoint(grid_, edge.vi), b = gridPoint(grid_, edge.vj);
+    const Vec3 mid = (a + b) * 0.5;
+    const Vec3 towardRebuilt = rejectFrom(gridPoint(grid_, edge.opposite) - mid, b - a);
+    std::pair<double, RankedVertex> keyed[kAngleOrdered];
+    const size_t count = std::min(nearest.size(), kAngleOrdered);
+    for (size_t k = 0; k < count; ++k) {
+        const Vec3 v = gridPoint(grid_, nearest[k].second);
+        const bool behind = dot(v - mid, towardRebuilt) > 0;
+        keyed[k] = {cosineSubtended(a, b, v) + (behind ? 4.0 : 0.0), nearest[k]};
+    }
+    // Ahead before behind, then largest angle (smallest cosine) first; equal
+    // keys keep distance order.
+    std::stable_sort(keyed, keyed + count, [](const std::pair<double, RankedVertex>& x,
+                                               const std::pair<double, RankedVertex>& y) { return x.first < y.first; });
+    for (size_t k = 0; k < count; ++k) nearest[k] = keyed[k].second;
 }
 
 // The nearest candidates, when the forecast holds them, take the first ranks

@@ -39,6 +39,8 @@ public:
     uint32_t vertexOfRank(uint32_t rank, const OpenEdge& edge);
 
 private:
+    void orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& nearest) const;
+
     const std::vector<int32_t>& grid_;
     int bits_;
     Levers levers_;

@@ -67,7 +67,9 @@ struct Levers {
     bool confidenceContext = true;
     // The three nearest candidates are ranked by the angle they subtend over
     // the edge, largest first (the apex of a Delaunay-like triangulation
-    // sees the edge under the largest angle); the rest by distance.
+    // sees the edge under the largest angle), those behind the edge last;
+    // the rest by distance. With confidence contexts, whether this order
+    // and the distance order agree on rank 1 doubles the contexts.
     bool angleOrder = true;
 
     static Levers none() { return Levers{false, false, false, false}; }
