@@ -65,7 +65,9 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
                 throw Error("corrupt file: the connectivity section describes more than the header's " +
                             std::to_string(faceCount) + " faces");
             try {
-                traversal.attachApex(edge, model.vertexOfRank(rank, edge));
+                const uint32_t apex = model.vertexOfRank(rank, edge);
+                model.resolved(apex);
+                traversal.attachApex(edge, apex);
             } catch (const Error& e) {
                 throw Error("corrupt file: face " + std::to_string(traversal.triangleCount()) + ": " + e.what());
             }

@@ -40,6 +40,13 @@ int confidenceBucket(const std::vector<RankedVertex>& nearest, bool fine) {
     return bucket;
 }
 
+// On regular meshes the distance order is usually right and the angle order
+// would swap in the other diagonal of a stretched quad (torus: rank 1 drops
+// from 100% to 77%); on irregular ones the angle order wins. So when the two
+// disagree on rank 1, the model follows the one that was right more often on
+// the last disagreements, which both sides see once the apex is known.
+constexpr uint32_t kOrderMemory = 64;
+
 // Cosine of the angle at v subtended by the edge (a, b); 1 (no angle) when v
 // coincides with an end. Candidates behind the edge, on the side of the
 // rebuilt triangle, get 4 added so that they follow every candidate ahead.
@@ -80,10 +87,20 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     if (!levers_.confidenceContext && !levers_.angleOrder) return f;
     f.nearest = ranks_.nearest(f.prediction, levers_.angleOrder ? kAngleOrdered : 2, edge);
     if (levers_.confidenceContext) f.context = confidenceBucket(f.nearest, fineBuckets_);
-    if (levers_.angleOrder && !f.nearest.empty()) {
+    disagreement_ = Disagreement();
+    if (levers_.angleOrder && f.nearest.size() >= 2) {
         const uint32_t nearestByDistance = f.nearest[0].second;
-        orderByAngle(edge, f.nearest);
-        if (levers_.confidenceContext && f.nearest[0].second != nearestByDistance) f.context += kDisagreementOffset;
+        std::vector<RankedVertex> byAngle = f.nearest;
+        orderByAngle(edge, byAngle);
+        if (byAngle[0].second != nearestByDistance) {
+            // The two orders disagree on rank 1: follow the one that was
+            // right more often on recent disagreements.
+            disagreement_ = {nearestByDistance, byAngle[0].second};
+            if (angleWins_ >= distanceWins_) f.nearest = byAngle;
+            if (levers_.confidenceContext) f.context += kDisagreementOffset;
+        } else {
+            f.nearest = byAngle;
+        }
     }
     return f;
 }
@@ -104,6 +121,17 @@ void EdgeModel::orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& ne
     std::stable_sort(keyed, keyed + count, [](const std::pair<double, RankedVertex>& x,
                                                const std::pair<double, RankedVertex>& y) { return x.first < y.first; });
     for (size_t k = 0; k < count; ++k) nearest[k] = keyed[k].second;
+}
+
+void EdgeModel::resolved(uint32_t apex) {
+    if (disagreement_.byDistance == kNoPreference) return;
+    if (apex == disagreement_.byAngle) ++angleWins_;
+    else if (apex == disagreement_.byDistance) ++distanceWins_;
+    // Halving keeps the choice local: it follows the mesh's regions.
+    if (angleWins_ + distanceWins_ > kOrderMemory) {
+        angleWins_ /= 2;
+        distanceWins_ /= 2;
+    }
 }
 
 // The nearest candidates, when the forecast holds them, take the first ranks

@@ -37,6 +37,9 @@ public:
     // Both use the forecast made last, for the same edge.
     uint32_t rankOf(uint32_t apex, const OpenEdge& edge);
     uint32_t vertexOfRank(uint32_t rank, const OpenEdge& edge);
+    // Tells the model the apex of the last forecast edge, once known, so it
+    // can learn which candidate order serves this mesh.
+    void resolved(uint32_t apex);
 
 private:
     void orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& nearest) const;
@@ -49,6 +52,11 @@ private:
     ApexPredictor predictor_;
     RankSearch ranks_;
     EdgeForecast forecast_;
+    // Rank-1 disagreements between distance and angle order: who was right.
+    struct Disagreement {
+        uint32_t byDistance = kNoPreference, byAngle = kNoPreference;
+    } disagreement_;
+    uint32_t angleWins_ = 0, distanceWins_ = 0;
 };
 
 }  // namespace drm

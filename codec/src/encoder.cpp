@@ -16,19 +16,26 @@
 
 namespace drm {
 
-Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
-    ProgressReporter progress(options.progress);
-    Encoded result;
-    result.grid = makeGrid(mesh.positions, options.bits);  // checks bits, emptiness, finiteness
-    result.quantized = quantize(mesh.positions, result.grid);
-    progress.stage("checking mesh", 0.0);
-    const MeshTopology topology = checkMesh(mesh);
+namespace {
 
-    Predictor predictor = options.predictor;
-    if (predictor == Predictor::Auto) {
-        progress.stage("choosing predictor", 0.02);
-        predictor = countPredictorVotes(mesh, topology, result.quantized).winner();
-    }
+constexpr size_t kTryWithoutLeversBelowFaces = 20000;
+
+// What every encoding of one mesh shares: the grid, the checked topology and
+// the predictor.
+struct PreparedMesh {
+    Grid grid;
+    std::vector<int32_t> quantized;
+    MeshTopology topology;
+    Predictor predictor = Predictor::Midpoint;
+};
+
+Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeOptions& options,
+                   ProgressReporter& progress) {
+    Encoded result;
+    result.grid = prepared.grid;
+    result.quantized = prepared.quantized;
+    const MeshTopology& topology = prepared.topology;
+    const Predictor predictor = prepared.predictor;
 
     const std::vector<uint32_t>& t = mesh.triangles;
     const size_t faceCount = mesh.faceCount();
@@ -71,6 +78,7 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
                 if (traversal.isCulled(apex))
                     throw Error("internal error: the apex of face " + std::to_string(face) + " was culled too early");
                 rank = model.rankOf(apex, edge);
+                model.resolved(apex);
                 traversal.attachApex(edge, apex);
                 attached[face] = 1;
                 result.faceRank[face] = rank;
@@ -103,8 +111,34 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     stats.connectivityBytes = connectivity.size();
     stats.geometryBytes = geometry.size();
     stats.totalBytes = result.bytes.size();
-    progress.stage("done", 1.0);
     return result;
+}
+
+}  // namespace
+
+Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
+    ProgressReporter progress(options.progress);
+    PreparedMesh prepared;
+    prepared.grid = makeGrid(mesh.positions, options.bits);  // checks bits, emptiness, finiteness
+    prepared.quantized = quantize(mesh.positions, prepared.grid);
+    progress.stage("checking mesh", 0.0);
+    prepared.topology = checkMesh(mesh);
+    prepared.predictor = options.predictor;
+    if (prepared.predictor == Predictor::Auto) {
+        progress.stage("choosing predictor", 0.02);
+        prepared.predictor = countPredictorVotes(mesh, prepared.topology, prepared.quantized).winner();
+    }
+    Encoded best = encodeOnce(mesh, prepared, options, progress);
+    const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
+                          options.levers.confidenceContext || options.levers.angleOrder;
+    if (options.tryWithoutLevers && anyLever && mesh.faceCount() < kTryWithoutLeversBelowFaces) {
+        EncodeOptions plain = options;
+        plain.levers = Levers::none();
+        Encoded alternative = encodeOnce(mesh, prepared, plain, progress);
+        if (alternative.bytes.size() < best.bytes.size()) best = std::move(alternative);
+    }
+    progress.stage("done", 1.0);
+    return best;
 }
 
 }  // namespace drm

@@ -17,6 +17,11 @@ constexpr uint32_t kIncrement = 32;
 constexpr uint32_t kLimit = kRangeCoderMaxTotal;
 
 constexpr uint32_t kEscape = kRankDirectSymbols;
+
+// A seeded context starts with a total count of at most kSeedMass, worth 8
+// observations (increment 32): enough to carry the parent's skew, little
+// enough to yield to the context's own statistics.
+constexpr uint32_t kSeedMass = 256;
 // Escaped ranks code w = rank - kRankDirectSymbols + 1 >= 1 as its bit
 // length (1..32, an adaptive symbol) followed by the bits below its leading
 // one. A length of 32 is only valid for the few largest ranks; a decoded w
@@ -87,6 +92,20 @@ uint32_t AdaptiveFrequencies::decode(RangeDecoder& coder) {
     return symbol;
 }
 
+void AdaptiveFrequencies::seedFrom(const AdaptiveFrequencies& parent, uint32_t mass) {
+    if (parent.total_ <= mass) {  // still (near) its prior: copy, never inflate
+        counts_ = parent.counts_;
+        total_ = parent.total_;
+        return;
+    }
+    total_ = 0;
+    for (size_t s = 0; s < counts_.size(); ++s) {
+        const uint64_t scaled = uint64_t(parent.counts_[s]) * mass / parent.total_;
+        counts_[s] = scaled > 0 ? uint32_t(scaled) : 1;
+        total_ += counts_[s];
+    }
+}
+
 void AdaptiveFrequencies::update(uint32_t symbol) {
     counts_[symbol] += kIncrement;
     total_ += kIncrement;
@@ -98,20 +117,31 @@ void AdaptiveFrequencies::update(uint32_t symbol) {
     }
 }
 
-RankEncoder::RankEncoder(int extraContexts)
+RankContexts::RankContexts(int extraContexts)
     : extraContexts_(checkedExtraContexts(extraContexts)),
-      ranks_(size_t(kRankClasses) * size_t(extraContexts_), AdaptiveFrequencies(rankPrior())),
-      escapeLengths_(escapeLengthPrior()) {}
+      parents_(kRankClasses, AdaptiveFrequencies(rankPrior())),
+      tables_(size_t(kRankClasses) * size_t(extraContexts_), AdaptiveFrequencies(rankPrior())),
+      seeded_(tables_.size(), 0) {}
+
+AdaptiveFrequencies& RankContexts::table(int previousClass, int extraContext) {
+    checkExtraContext(extraContext, extraContexts_);
+    const size_t index = size_t(previousClass * extraContexts_ + extraContext);
+    if (!seeded_[index]) {
+        tables_[index].seedFrom(parents_[size_t(previousClass)], kSeedMass);
+        seeded_[index] = 1;
+    }
+    return tables_[index];
+}
+
+RankEncoder::RankEncoder(int extraContexts) : ranks_(extraContexts), escapeLengths_(escapeLengthPrior()) {}
 
 void RankEncoder::put(uint32_t rank, int extraContext) {
-    checkExtraContext(extraContext, extraContexts_);
-    AdaptiveFrequencies& model = ranks_[size_t(previousClass_ * extraContexts_ + extraContext)];
+    AdaptiveFrequencies& model = ranks_.table(previousClass_, extraContext);
+    const uint32_t symbol = rank < kRankDirectSymbols ? rank : kEscape;
+    model.encode(coder_, symbol);
+    ranks_.observed(previousClass_, symbol);
     previousClass_ = rankClass(rank);
-    if (rank < kRankDirectSymbols) {
-        model.encode(coder_, rank);
-        return;
-    }
-    model.encode(coder_, kEscape);
+    if (rank < kRankDirectSymbols) return;
     const uint64_t w = uint64_t(rank) - kRankDirectSymbols + 1;
     const int length = bitLength(w);
     escapeLengths_.encode(coder_, uint32_t(length - 1));
@@ -126,15 +156,12 @@ void RankEncoder::put(uint32_t rank, int extraContext) {
 std::vector<uint8_t> RankEncoder::finish() { return coder_.finish(); }
 
 RankDecoder::RankDecoder(const uint8_t* data, size_t size, int extraContexts)
-    : coder_(data, size),
-      extraContexts_(checkedExtraContexts(extraContexts)),
-      ranks_(size_t(kRankClasses) * size_t(extraContexts_), AdaptiveFrequencies(rankPrior())),
-      escapeLengths_(escapeLengthPrior()) {}
+    : coder_(data, size), ranks_(extraContexts), escapeLengths_(escapeLengthPrior()) {}
 
 uint32_t RankDecoder::get(int extraContext) {
-    checkExtraContext(extraContext, extraContexts_);
-    AdaptiveFrequencies& model = ranks_[size_t(previousClass_ * extraContexts_ + extraContext)];
+    AdaptiveFrequencies& model = ranks_.table(previousClass_, extraContext);
     uint32_t rank = model.decode(coder_);
+    ranks_.observed(previousClass_, rank);
     if (rank == kEscape) {
         const int length = int(escapeLengths_.decode(coder_)) + 1;
         uint64_t w = 1;

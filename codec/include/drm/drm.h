@@ -80,6 +80,10 @@ struct EncodeOptions {
     Predictor predictor = Predictor::Auto;
     bool curvature = false;                 // the paper's curvature correction
     Levers levers;
+    // Below 20000 faces, also encode with no levers and keep the smaller
+    // file: on tiny regular meshes (a 288-vertex torus) learning the levers'
+    // contexts can cost a byte or two more than it saves.
+    bool tryWithoutLevers = true;
     Progress progress;                      // may be empty
 };
 
