@@ -22,6 +22,20 @@ Predictor parsePredictor(const std::string& name) {
     throw Error("unknown predictor '" + name + "' (use auto, parallelogram or midpoint)");
 }
 
+const char* geometryCoderName(GeometryCoder g) {
+    switch (g) {
+        case GeometryCoder::Raw: return "raw";
+        case GeometryCoder::SpanningTree: return "tree";
+    }
+    return "unknown";
+}
+
+GeometryCoder parseGeometryCoder(const std::string& name) {
+    for (GeometryCoder g : {GeometryCoder::SpanningTree, GeometryCoder::Raw})
+        if (name == geometryCoderName(g)) return g;
+    throw Error("unknown geometry coder '" + name + "' (use tree or raw)");
+}
+
 namespace {
 double perVertex(uint64_t bytes, uint64_t vertices) { return vertices ? 8.0 * double(bytes) / double(vertices) : 0.0; }
 }  // namespace

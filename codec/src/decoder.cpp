@@ -5,6 +5,7 @@
 
 #include "file_format.h"
 #include "geometry_raw.h"
+#include "geometry_tree.h"
 #include "edge_model.h"
 #include "progress.h"
 #include "quantize.h"
@@ -22,7 +23,10 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
 
     Decoded result;
     result.grid = header.grid;
-    result.quantized = unpackGrid(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits);
+    progress.stage("decoding vertices", 0.01);
+    result.quantized = header.geometryCoder == GeometryCoder::Raw
+                           ? unpackGrid(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits)
+                           : decodeGeometryTree(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits);
 
     const size_t vertexCount = size_t(header.vertexCount);
     const size_t faceCount = size_t(header.faceCount);
@@ -94,6 +98,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     stats.headerBytes = parts.headerBytes;
     stats.connectivityBytes = parts.connectivitySize;
     stats.geometryBytes = parts.geometrySize;
+    stats.geometry = header.geometryCoder;
     stats.totalBytes = size;
     progress.stage("done", 1.0);
     return result;

@@ -5,6 +5,7 @@
 
 #include "file_format.h"
 #include "geometry_raw.h"
+#include "geometry_tree.h"
 #include "mesh_check.h"
 #include "edge_model.h"
 #include "predictor_selection.h"
@@ -20,12 +21,18 @@ namespace {
 
 constexpr size_t kTryWithoutLeversBelowFaces = 20000;
 
-// What every encoding of one mesh shares: the grid, the checked topology and
-// the predictor.
+// What every encoding of one mesh shares: the grid, the geometry section,
+// the mesh renumbered into the decoded vertex order, its topology and the
+// predictor. Connectivity is coded over the renumbered mesh, because ties
+// between equal distances are broken by the indices the decoder will see.
 struct PreparedMesh {
     Grid grid;
-    std::vector<int32_t> quantized;
-    MeshTopology topology;
+    std::vector<int32_t> quantized;   // input order
+    std::vector<uint8_t> geometry;    // the geometry section
+    std::vector<uint32_t> order;      // decoded index -> input index
+    std::vector<int32_t> decodedGrid; // decoded order
+    Mesh renumbered;                  // triangles over decoded indices (no positions)
+    MeshTopology topology;            // of renumbered
     Predictor predictor = Predictor::Midpoint;
 };
 
@@ -34,14 +41,16 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     Encoded result;
     result.grid = prepared.grid;
     result.quantized = prepared.quantized;
+    result.vertexOrder = prepared.order;
     const MeshTopology& topology = prepared.topology;
     const Predictor predictor = prepared.predictor;
+    const std::vector<int32_t>& grid = prepared.decodedGrid;
 
-    const std::vector<uint32_t>& t = mesh.triangles;
+    const std::vector<uint32_t>& t = prepared.renumbered.triangles;
     const size_t faceCount = mesh.faceCount();
-    VertexIndex candidates(result.quantized);
+    VertexIndex candidates(grid);
     Traversal traversal(mesh.vertexCount(), faceCount, &candidates);
-    EdgeModel model(result.quantized, options.bits, predictor, options.curvature, options.levers, faceCount,
+    EdgeModel model(grid, options.bits, predictor, options.curvature, options.levers, faceCount,
                     candidates, traversal);
     RankEncoder coder(model.contextCount());
 
@@ -50,6 +59,7 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     header.faceCount = faceCount;
     header.grid = result.grid;
     header.predictor = predictor;
+    header.geometryCoder = options.geometry;
     header.curvature = options.curvature;
     header.levers = options.levers;
     Stats& stats = result.stats;
@@ -93,11 +103,8 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
 
     progress.stage("writing", 0.95);
     const std::vector<uint8_t> connectivity = coder.finish();
-    const std::vector<uint8_t> geometry = packGrid(result.quantized, options.bits);
     size_t headerBytes = 0;
-    result.bytes = writeFile(header, connectivity, geometry, &headerBytes);
-    result.vertexOrder.resize(mesh.vertexCount());
-    for (size_t v = 0; v < result.vertexOrder.size(); ++v) result.vertexOrder[v] = uint32_t(v);
+    result.bytes = writeFile(header, connectivity, prepared.geometry, &headerBytes);
 
     stats.vertices = mesh.vertexCount();
     stats.faces = faceCount;
@@ -109,7 +116,8 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     stats.levers = options.levers;
     stats.headerBytes = headerBytes;
     stats.connectivityBytes = connectivity.size();
-    stats.geometryBytes = geometry.size();
+    stats.geometryBytes = prepared.geometry.size();
+    stats.geometry = options.geometry;
     stats.totalBytes = result.bytes.size();
     return result;
 }
@@ -122,19 +130,43 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     prepared.grid = makeGrid(mesh.positions, options.bits);  // checks bits, emptiness, finiteness
     prepared.quantized = quantize(mesh.positions, prepared.grid);
     progress.stage("checking mesh", 0.0);
-    prepared.topology = checkMesh(mesh);
+    checkMesh(mesh);  // refuses with messages in the input's own indices
+
+    progress.stage("coding vertices", 0.01);
+    if (options.geometry == GeometryCoder::SpanningTree) {
+        GeometryEncoding geometry = encodeGeometryTree(prepared.quantized, options.bits);
+        prepared.geometry = std::move(geometry.bytes);
+        prepared.order = std::move(geometry.order);
+    } else if (options.geometry == GeometryCoder::Raw) {
+        prepared.geometry = packGrid(prepared.quantized, options.bits);
+        prepared.order.resize(mesh.vertexCount());
+        for (size_t v = 0; v < prepared.order.size(); ++v) prepared.order[v] = uint32_t(v);
+    } else {
+        throw Error("unknown geometry coder " + std::to_string(int(options.geometry)));
+    }
+    std::vector<uint32_t> decodedIndex(mesh.vertexCount());
+    prepared.decodedGrid.resize(prepared.quantized.size());
+    for (size_t d = 0; d < prepared.order.size(); ++d) {
+        decodedIndex[prepared.order[d]] = uint32_t(d);
+        for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = prepared.quantized[3 * size_t(prepared.order[d]) + k];
+    }
+    prepared.renumbered.triangles.resize(mesh.triangles.size());
+    for (size_t c = 0; c < mesh.triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[mesh.triangles[c]];
+    prepared.renumbered.positions.resize(mesh.positions.size());  // only its size matters to the checks
+    prepared.topology = checkMesh(prepared.renumbered);
+
     prepared.predictor = options.predictor;
     if (prepared.predictor == Predictor::Auto) {
-        progress.stage("choosing predictor", 0.02);
-        prepared.predictor = countPredictorVotes(mesh, prepared.topology, prepared.quantized).winner();
+        progress.stage("choosing predictor", 0.04);
+        prepared.predictor = countPredictorVotes(prepared.renumbered, prepared.topology, prepared.decodedGrid).winner();
     }
-    Encoded best = encodeOnce(mesh, prepared, options, progress);
+    Encoded best = encodeOnce(prepared.renumbered, prepared, options, progress);
     const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
                           options.levers.confidenceContext || options.levers.angleOrder;
     if (options.tryWithoutLevers && anyLever && mesh.faceCount() < kTryWithoutLeversBelowFaces) {
         EncodeOptions plain = options;
         plain.levers = Levers::none();
-        Encoded alternative = encodeOnce(mesh, prepared, plain, progress);
+        Encoded alternative = encodeOnce(prepared.renumbered, prepared, plain, progress);
         if (alternative.bytes.size() < best.bytes.size()) best = std::move(alternative);
     }
     progress.stage("done", 1.0);

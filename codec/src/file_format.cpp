@@ -59,8 +59,9 @@ FileHeader decodeHeader(ByteReader& in) {
     if (connectivity != uint8_t(ConnectivityCoder::RankRangeCoder))
         throw Error("unsupported file: unknown connectivity coder " + std::to_string(connectivity));
     const uint8_t geometry = in.u8("geometry coder");
-    if (geometry != uint8_t(GeometryCoder::RawGrid))
+    if (geometry != uint8_t(GeometryCoder::Raw) && geometry != uint8_t(GeometryCoder::SpanningTree))
         throw Error("unsupported file: unknown geometry coder " + std::to_string(geometry));
+    h.geometryCoder = GeometryCoder(geometry);
     for (double& o : h.grid.origin) o = in.f64("bounding box origin");
     h.grid.step = in.f64("grid step");
     for (double o : h.grid.origin)

@@ -15,7 +15,6 @@ constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
 constexpr uint16_t kFormatVersion = 1;
 
 enum class ConnectivityCoder : uint8_t { RankRangeCoder = 1 };
-enum class GeometryCoder : uint8_t { RawGrid = 1 };
 
 constexpr uint16_t kFlagCurvature = 1;
 constexpr uint16_t kFlagTopologicalFilter = 2;
@@ -32,7 +31,7 @@ struct FileHeader {
     bool curvature = false;
     Levers levers;
     ConnectivityCoder connectivityCoder = ConnectivityCoder::RankRangeCoder;
-    GeometryCoder geometryCoder = GeometryCoder::RawGrid;
+    GeometryCoder geometryCoder = GeometryCoder::SpanningTree;
     std::vector<uint32_t> startTriangles;  // 3 vertex indices per component
 };
 

@@ -50,14 +50,29 @@ uint64_t codeCount(const Stats& s) {
 }
 
 void expectRoundTrip(const Mesh& mesh, uint64_t boundaryEdges, uint64_t components) {
-    const Encoded encoded = encode(mesh);
-    EXPECT_EQ(encoded.stats.boundaryEdges, boundaryEdges);
-    EXPECT_EQ(encoded.stats.components, components);
-    EXPECT_EQ(codeCount(encoded.stats), mesh.faceCount() + boundaryEdges - components);
-    const Decoded decoded = decode(encoded.bytes);
-    EXPECT_EQ(decoded.quantized, encoded.quantized);  // raw geometry keeps the input order
-    EXPECT_EQ(orientedTriangles(decoded.mesh), orientedTriangles(mesh));
-    EXPECT_EQ(decoded.stats.rankHistogram, encoded.stats.rankHistogram);
+    for (GeometryCoder geometry : {GeometryCoder::SpanningTree, GeometryCoder::Raw}) {
+        for (bool levers : {true, false}) {
+            EncodeOptions options;
+            options.geometry = geometry;
+            if (!levers) options.levers = Levers::none();
+            options.tryWithoutLevers = false;
+            const Encoded encoded = encode(mesh, options);
+            EXPECT_EQ(encoded.stats.boundaryEdges, boundaryEdges);
+            EXPECT_EQ(encoded.stats.components, components);
+            EXPECT_EQ(codeCount(encoded.stats), mesh.faceCount() + boundaryEdges - components);
+            const Decoded decoded = decode(encoded.bytes);
+            ASSERT_EQ(decoded.quantized.size(), encoded.quantized.size());
+            Mesh inInputIndices = decoded.mesh;
+            for (size_t d = 0; d < encoded.vertexOrder.size(); ++d)
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_EQ(decoded.quantized[3 * d + k], encoded.quantized[3 * size_t(encoded.vertexOrder[d]) + k]);
+            for (uint32_t& v : inInputIndices.triangles) v = encoded.vertexOrder[v];
+            EXPECT_EQ(orientedTriangles(inInputIndices), orientedTriangles(mesh));
+            EXPECT_EQ(decoded.stats.rankHistogram, encoded.stats.rankHistogram);
+            if (geometry == GeometryCoder::Raw)
+                for (size_t d = 0; d < encoded.vertexOrder.size(); ++d) EXPECT_EQ(encoded.vertexOrder[d], d);
+        }
+    }
 }
 
 TEST(Traversal, SingleTriangleCodesThreeBoundaries) {

@@ -44,6 +44,16 @@ enum class Predictor : uint8_t {
     Midpoint = 2,
 };
 
+// How the vertex set is coded (the geometry section).
+enum class GeometryCoder : uint8_t {
+    Raw = 1,           // every grid coordinate in `bits` bits; keeps the input order
+    SpanningTree = 2,  // predictive coding along a nearest-neighbour spanning tree
+};
+
+const char* geometryCoderName(GeometryCoder g);
+// Parses "raw", "tree"; throws Error otherwise.
+GeometryCoder parseGeometryCoder(const std::string& name);
+
 const char* predictorName(Predictor p);
 // Parses "auto", "parallelogram", "midpoint"; throws Error otherwise.
 Predictor parsePredictor(const std::string& name);
@@ -79,6 +89,7 @@ struct EncodeOptions {
     int bits = 12;                          // quantization bits per axis, 1..21
     Predictor predictor = Predictor::Auto;
     bool curvature = false;                 // the paper's curvature correction
+    GeometryCoder geometry = GeometryCoder::SpanningTree;
     Levers levers;
     // Below 20000 faces, also encode with no levers and keep the smaller
     // file: on tiny regular meshes (a 288-vertex torus) learning the levers'
@@ -99,6 +110,7 @@ struct Stats {
     Predictor predictor = Predictor::Midpoint;  // the one used (never Auto)
     bool curvature = false;
     Levers levers;
+    GeometryCoder geometry = GeometryCoder::SpanningTree;
     uint64_t headerBytes = 0;
     uint64_t connectivityBytes = 0;
     uint64_t geometryBytes = 0;
@@ -126,7 +138,8 @@ struct Encoded {
     Grid grid;
     // Quantized input positions (3 per vertex, input vertex order).
     std::vector<int32_t> quantized;
-    // decodedVertex[i] = input vertex index of decoded vertex i.
+    // vertexOrder[i] = input vertex index of decoded vertex i. The geometry
+    // coder chooses the decoded order (the raw coder keeps the input order).
     std::vector<uint32_t> vertexOrder;
     // For each input face, the rank code that created it (>= 1), or 0 for a
     // component's start triangle, which is stored in the header, not ranked.

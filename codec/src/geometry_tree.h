@@ -1,0 +1,31 @@
+// The vertex set coder: a spanning tree over near neighbours, walked depth
+// first; each vertex is coded as the residual from a prediction the decoder
+// can rebuild from vertices it already has (parent, grandparent, siblings,
+// the previous tree edge), the encoder picking the best and coding which.
+// This is the family the method notes measured best among connectivity-free
+// point coders (bunny 11.3 bpv, horse 11.3 at 12 bits).
+//
+// The tree defines the decoded vertex order (depth-first preorder).
+#ifndef DRM_GEOMETRY_TREE_H
+#define DRM_GEOMETRY_TREE_H
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace drm {
+
+struct GeometryEncoding {
+    std::vector<uint8_t> bytes;
+    std::vector<uint32_t> order;  // order[i] = input index of decoded vertex i
+};
+
+GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits);
+
+// Throws Error on data that does not decode to exactly vertexCount vertices
+// on the grid.
+std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits);
+
+}  // namespace drm
+
+#endif  // DRM_GEOMETRY_TREE_H
