@@ -83,14 +83,19 @@ Predictions predict(const std::vector<Point>& pos, const std::vector<uint32_t>& 
 // The models shared by both sides.
 struct GeometryModels {
     std::vector<AdaptiveFrequencies> residualClass;  // [axis][class context]
-    AdaptiveFrequencies predictorChoice;
+    std::vector<AdaptiveFrequencies> topBit;         // [axis][bit length]: the bit below the leading one
+    std::vector<AdaptiveFrequencies> predictorChoice;  // [previous choice]
     AdaptiveFrequencies childCount;
     int previousClass[3] = {0, 0, 0};
+    uint32_t previousChoice = 0;
 
     GeometryModels()
         : residualClass(3 * kClassContexts, AdaptiveFrequencies(std::vector<uint16_t>(kResidualClasses, 1))),
-          predictorChoice(std::vector<uint16_t>(kPredictors, 1)),
+          topBit(3 * kResidualClasses, AdaptiveFrequencies(std::vector<uint16_t>(2, 1))),
+          predictorChoice(kPredictors, AdaptiveFrequencies(std::vector<uint16_t>(kPredictors, 1))),
           childCount(std::vector<uint16_t>(kDirectChildCounts + 1, 1)) {}
+
+    AdaptiveFrequencies& choiceModel() { return predictorChoice[previousChoice]; }
 
     AdaptiveFrequencies& classModel(int axis) {
         return residualClass[size_t(axis * kClassContexts + std::min(previousClass[axis], kClassContexts - 1))];
@@ -124,7 +129,10 @@ void encodeResidual(RangeEncoder& coder, GeometryModels& models, int axis, int32
     models.previousClass[axis] = n;
     if (n == 0) return;
     coder.encodeBits(r < 0 ? 1 : 0, 1);
-    encodeWide(coder, magnitude, n - 1);
+    if (n == 1) return;
+    // Residuals are peaked: within a bit length the smaller half is likelier.
+    models.topBit[size_t(axis * kResidualClasses + n)].encode(coder, (magnitude >> (n - 2)) & 1);
+    encodeWide(coder, magnitude, n - 2);
 }
 
 int32_t decodeResidual(RangeDecoder& coder, GeometryModels& models, int axis) {
@@ -132,7 +140,11 @@ int32_t decodeResidual(RangeDecoder& coder, GeometryModels& models, int axis) {
     models.previousClass[axis] = n;
     if (n == 0) return 0;
     const bool negative = coder.decodeBits(1) != 0;
-    const uint32_t magnitude = (uint32_t(1) << (n - 1)) | decodeWide(coder, n - 1);
+    uint32_t magnitude = 1;
+    if (n > 1) {
+        const uint32_t top = models.topBit[size_t(axis * kResidualClasses + n)].decode(coder);
+        magnitude = (((uint32_t(1) << 1) | top) << (n - 2)) | decodeWide(coder, n - 2);
+    }
     return negative ? -int32_t(magnitude) : int32_t(magnitude);
 }
 
@@ -252,6 +264,23 @@ Point pointOf(const std::vector<int32_t>& grid, uint32_t v) {
 }
 
 
+// The encoder may visit children in any order; the first child of a vertex
+// is predicted by going straight on from its parent, so it should be the
+// child that lies most nearly straight on (others use sibling predictions).
+void orderChildrenForPrediction(const std::vector<int32_t>& grid, std::vector<std::vector<uint32_t>>& children) {
+    std::vector<uint32_t> parentOf(children.size(), kNone);
+    for (size_t v = 0; v < children.size(); ++v)
+        for (uint32_t c : children[v]) parentOf[c] = uint32_t(v);
+    for (size_t v = 0; v < children.size(); ++v) {
+        if (parentOf[v] == kNone || children[v].size() < 2) continue;
+        const Point at = pointOf(grid, uint32_t(v));
+        const Point straight = at + (at - pointOf(grid, parentOf[v]));
+        std::stable_sort(children[v].begin(), children[v].end(), [&](uint32_t a, uint32_t b) {
+            return residualCost(pointOf(grid, a) - straight) < residualCost(pointOf(grid, b) - straight);
+        });
+    }
+}
+
 // The depth-first preorder of the forest (roots in input order, children
 // nearest first), as input vertices.
 std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& children) {
@@ -277,7 +306,8 @@ std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& childre
 }  // namespace
 
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits) {
-    const std::vector<std::vector<uint32_t>> children = spanningForest(grid);
+    std::vector<std::vector<uint32_t>> children = spanningForest(grid);
+    orderChildrenForPrediction(grid, children);
     GeometryEncoding result;
     result.order = preorder(children);
     const size_t n = result.order.size();
@@ -306,7 +336,8 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits) 
                     best = c;
                 }
             }
-            models.predictorChoice.encode(coder, uint32_t(best));
+            models.choiceModel().encode(coder, uint32_t(best));
+            models.previousChoice = uint32_t(best);
             const Point r = at - p.candidate[best];
             encodeResidual(coder, models, 0, r.x);
             encodeResidual(coder, models, 1, r.y);
@@ -344,7 +375,8 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
             at = {int32_t(decodeWide(coder, bits)), int32_t(decodeWide(coder, bits)), int32_t(decodeWide(coder, bits))};
         } else {
             --promised;
-            const uint32_t choice = models.predictorChoice.decode(coder);
+            const uint32_t choice = models.choiceModel().decode(coder);
+            models.previousChoice = choice;
             const Predictions p = predict(pos, parentOf, self, parent, sibling);
             const Point base = p.candidate[choice];
             const int32_t rx = decodeResidual(coder, models, 0);
