@@ -28,6 +28,7 @@ constexpr size_t kTryWithoutLeversBelowFaces = 20000;
 struct PreparedMesh {
     Grid grid;
     std::vector<int32_t> quantized;   // input order
+    GeometryCoder geometryCoder = GeometryCoder::SpanningTree;
     std::vector<uint8_t> geometry;    // the geometry section
     std::vector<uint32_t> order;      // decoded index -> input index
     std::vector<int32_t> decodedGrid; // decoded order
@@ -59,7 +60,7 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     header.faceCount = faceCount;
     header.grid = result.grid;
     header.predictor = predictor;
-    header.geometryCoder = options.geometry;
+    header.geometryCoder = prepared.geometryCoder;
     header.curvature = options.curvature;
     header.levers = options.levers;
     Stats& stats = result.stats;
@@ -117,7 +118,7 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     stats.headerBytes = headerBytes;
     stats.connectivityBytes = connectivity.size();
     stats.geometryBytes = prepared.geometry.size();
-    stats.geometry = options.geometry;
+    stats.geometry = prepared.geometryCoder;
     stats.totalBytes = result.bytes.size();
     return result;
 }
@@ -133,16 +134,23 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     checkMesh(mesh);  // refuses with messages in the input's own indices
 
     progress.stage("coding vertices", 0.01);
+    if (options.geometry != GeometryCoder::SpanningTree && options.geometry != GeometryCoder::Raw)
+        throw Error("unknown geometry coder " + std::to_string(int(options.geometry)));
+    prepared.geometryCoder = GeometryCoder::Raw;
+    prepared.geometry = packGrid(prepared.quantized, options.bits);
     if (options.geometry == GeometryCoder::SpanningTree) {
-        GeometryEncoding geometry = encodeGeometryTree(prepared.quantized, options.bits);
-        prepared.geometry = std::move(geometry.bytes);
-        prepared.order = std::move(geometry.order);
-    } else if (options.geometry == GeometryCoder::Raw) {
-        prepared.geometry = packGrid(prepared.quantized, options.bits);
+        // Scattered points (a soup of random triangles) predict no better
+        // than raw bits: keep whichever section is smaller.
+        GeometryEncoding tree = encodeGeometryTree(prepared.quantized, options.bits);
+        if (tree.bytes.size() < prepared.geometry.size()) {
+            prepared.geometryCoder = GeometryCoder::SpanningTree;
+            prepared.geometry = std::move(tree.bytes);
+            prepared.order = std::move(tree.order);
+        }
+    }
+    if (prepared.geometryCoder == GeometryCoder::Raw) {
         prepared.order.resize(mesh.vertexCount());
         for (size_t v = 0; v < prepared.order.size(); ++v) prepared.order[v] = uint32_t(v);
-    } else {
-        throw Error("unknown geometry coder " + std::to_string(int(options.geometry)));
     }
     std::vector<uint32_t> decodedIndex(mesh.vertexCount());
     prepared.decodedGrid.resize(prepared.quantized.size());

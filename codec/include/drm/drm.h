@@ -48,6 +48,7 @@ enum class Predictor : uint8_t {
 enum class GeometryCoder : uint8_t {
     Raw = 1,           // every grid coordinate in `bits` bits; keeps the input order
     SpanningTree = 2,  // predictive coding along a nearest-neighbour spanning tree
+                       // (the encoder falls back to raw where that is smaller)
 };
 
 const char* geometryCoderName(GeometryCoder g);
