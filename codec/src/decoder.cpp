@@ -11,6 +11,7 @@
 #include "quantize.h"
 #include "rank_coder.h"
 #include "traversal.h"
+#include "vertex_order.h"
 #include "vertex_index.h"
 
 namespace drm {
@@ -83,6 +84,15 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
                     std::to_string(faceCount));
 
     result.mesh.triangles = traversal.triangles();
+    if (header.keepsVertexOrder) {
+        // Back to the input numbering: decoded vertex d was input vertex order[d].
+        const std::vector<uint32_t> order = decodeVertexOrder(parts.vertexOrder, parts.vertexOrderSize, vertexCount);
+        std::vector<int32_t> inInputOrder(result.quantized.size());
+        for (size_t d = 0; d < vertexCount; ++d)
+            for (int k = 0; k < 3; ++k) inInputOrder[3 * size_t(order[d]) + k] = result.quantized[3 * d + k];
+        result.quantized.swap(inInputOrder);
+        for (uint32_t& v : result.mesh.triangles) v = order[v];
+    }
     result.mesh.positions.resize(result.quantized.size());
     for (size_t i = 0; i < result.quantized.size(); ++i)
         result.mesh.positions[i] = float(header.grid.origin[i % 3] + double(result.quantized[i]) * header.grid.step);
@@ -99,6 +109,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     stats.connectivityBytes = parts.connectivitySize;
     stats.geometryBytes = parts.geometrySize;
     stats.geometry = header.geometryCoder;
+    stats.vertexOrderBytes = parts.vertexOrderSize;
     stats.totalBytes = size;
     progress.stage("done", 1.0);
     return result;

@@ -13,6 +13,7 @@
 #include "quantize.h"
 #include "rank_coder.h"
 #include "traversal.h"
+#include "vertex_order.h"
 #include "vertex_index.h"
 
 namespace drm {
@@ -43,6 +44,8 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     result.grid = prepared.grid;
     result.quantized = prepared.quantized;
     result.vertexOrder = prepared.order;
+    if (options.keepVertexOrder)
+        for (size_t v = 0; v < result.vertexOrder.size(); ++v) result.vertexOrder[v] = uint32_t(v);
     const MeshTopology& topology = prepared.topology;
     const Predictor predictor = prepared.predictor;
     const std::vector<int32_t>& grid = prepared.decodedGrid;
@@ -61,6 +64,7 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     header.grid = result.grid;
     header.predictor = predictor;
     header.geometryCoder = prepared.geometryCoder;
+    header.keepsVertexOrder = options.keepVertexOrder;
     header.curvature = options.curvature;
     header.levers = options.levers;
     Stats& stats = result.stats;
@@ -105,7 +109,9 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     progress.stage("writing", 0.95);
     const std::vector<uint8_t> connectivity = coder.finish();
     size_t headerBytes = 0;
-    result.bytes = writeFile(header, connectivity, prepared.geometry, &headerBytes);
+    const std::vector<uint8_t> vertexOrder =
+        options.keepVertexOrder ? encodeVertexOrder(prepared.order) : std::vector<uint8_t>();
+    result.bytes = writeFile(header, connectivity, prepared.geometry, vertexOrder, &headerBytes);
 
     stats.vertices = mesh.vertexCount();
     stats.faces = faceCount;
@@ -119,6 +125,7 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     stats.connectivityBytes = connectivity.size();
     stats.geometryBytes = prepared.geometry.size();
     stats.geometry = prepared.geometryCoder;
+    stats.vertexOrderBytes = vertexOrder.size();
     stats.totalBytes = result.bytes.size();
     return result;
 }

@@ -12,7 +12,6 @@
 namespace drm {
 namespace {
 
-const char* const kSectionNames[3] = {"header", "connectivity", "geometry"};
 
 void writeSection(ByteWriter& out, const std::vector<uint8_t>& payload) {
     out.varint(payload.size());
@@ -25,7 +24,7 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     out.u16(uint16_t((h.curvature ? kFlagCurvature : 0) | (h.levers.topologicalFilter ? kFlagTopologicalFilter : 0) |
                      (h.levers.gapClosing ? kFlagGapClosing : 0) |
                      (h.levers.confidenceContext ? kFlagConfidenceContext : 0) |
-                     (h.levers.angleOrder ? kFlagAngleOrder : 0)));
+                     (h.levers.angleOrder ? kFlagAngleOrder : 0) | (h.keepsVertexOrder ? kFlagVertexOrder : 0)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
     out.u8(uint8_t(h.connectivityCoder));
@@ -48,6 +47,7 @@ FileHeader decodeHeader(ByteReader& in) {
     h.levers.gapClosing = (flags & kFlagGapClosing) != 0;
     h.levers.confidenceContext = (flags & kFlagConfidenceContext) != 0;
     h.levers.angleOrder = (flags & kFlagAngleOrder) != 0;
+    h.keepsVertexOrder = (flags & kFlagVertexOrder) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
         throw Error("corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");
@@ -84,14 +84,18 @@ FileHeader decodeHeader(ByteReader& in) {
 }  // namespace
 
 std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
-                               const std::vector<uint8_t>& geometry, size_t* headerBytes) {
+                               const std::vector<uint8_t>& geometry, const std::vector<uint8_t>& vertexOrder,
+                               size_t* headerBytes) {
     ByteWriter out;
     out.bytes(kSignature, sizeof kSignature);
     out.u16(kFormatVersion);
     writeSection(out, encodeHeader(header));
     writeSection(out, connectivity);
     writeSection(out, geometry);
-    if (headerBytes) *headerBytes = out.size() - connectivity.size() - geometry.size();
+    if (header.keepsVertexOrder) writeSection(out, vertexOrder);
+    if (headerBytes)
+        *headerBytes = out.size() - connectivity.size() - geometry.size() -
+                       (header.keepsVertexOrder ? vertexOrder.size() : 0);
     return std::move(out.buffer());
 }
 
@@ -106,30 +110,29 @@ FileParts readFile(const uint8_t* data, size_t size) {
         throw Error("unsupported .drm format version " + std::to_string(version) + ": this reader knows version " +
                     std::to_string(kFormatVersion));
 
-    const uint8_t* payload[3];
-    size_t payloadSize[3];
-    for (int s = 0; s < 3; ++s) {
-        const std::string name = kSectionNames[s];
-        payloadSize[s] = size_t(file.count((name + " section length").c_str(), file.remaining()));
+    // Each section: length, CRC-32, payload. The header comes first, and
+    // says whether a fourth (vertex order) section follows the geometry.
+    auto section = [&](const std::string& name, const uint8_t** payload, size_t* payloadSize) {
+        *payloadSize = size_t(file.count((name + " section length").c_str(), file.remaining()));
         const uint32_t stored = file.u32((name + " section checksum").c_str());
         const size_t offset = file.offset();
-        payload[s] = file.bytes(payloadSize[s], (name + " section").c_str());
-        const uint32_t actual = crc32(payload[s], payloadSize[s]);
-        if (actual != stored)
+        *payload = file.bytes(*payloadSize, (name + " section").c_str());
+        if (crc32(*payload, *payloadSize) != stored)
             throw Error("corrupt file: the " + name + " section (offset " + std::to_string(offset) +
                         ") fails its checksum");
-    }
+    };
+    FileParts parts;
+    const uint8_t* headerPayload = nullptr;
+    size_t headerSize = 0;
+    section("header", &headerPayload, &headerSize);
+    ByteReader header(headerPayload, headerSize, "header", size_t(headerPayload - data));
+    parts.header = decodeHeader(header);
+    section("connectivity", &parts.connectivity, &parts.connectivitySize);
+    section("geometry", &parts.geometry, &parts.geometrySize);
+    if (parts.header.keepsVertexOrder) section("vertex order", &parts.vertexOrder, &parts.vertexOrderSize);
     if (file.remaining() != 0)
         throw Error("corrupt file: " + std::to_string(file.remaining()) + " unexpected bytes after the last section");
-
-    FileParts parts;
-    ByteReader header(payload[0], payloadSize[0], "header", size_t(payload[0] - data));
-    parts.header = decodeHeader(header);
-    parts.connectivity = payload[1];
-    parts.connectivitySize = payloadSize[1];
-    parts.geometry = payload[2];
-    parts.geometrySize = payloadSize[2];
-    parts.headerBytes = size - payloadSize[1] - payloadSize[2];
+    parts.headerBytes = size - parts.connectivitySize - parts.geometrySize - parts.vertexOrderSize;
     return parts;
 }
 

@@ -21,7 +21,8 @@ constexpr uint16_t kFlagTopologicalFilter = 2;
 constexpr uint16_t kFlagGapClosing = 4;
 constexpr uint16_t kFlagConfidenceContext = 8;
 constexpr uint16_t kFlagAngleOrder = 16;
-constexpr uint16_t kKnownFlags = 31;
+constexpr uint16_t kFlagVertexOrder = 32;  // a fourth section holds the input vertex order
+constexpr uint16_t kKnownFlags = 63;
 
 struct FileHeader {
     uint64_t vertexCount = 0;
@@ -29,6 +30,7 @@ struct FileHeader {
     Grid grid;
     Predictor predictor = Predictor::Midpoint;
     bool curvature = false;
+    bool keepsVertexOrder = false;
     Levers levers;
     ConnectivityCoder connectivityCoder = ConnectivityCoder::RankRangeCoder;
     GeometryCoder geometryCoder = GeometryCoder::SpanningTree;
@@ -41,11 +43,15 @@ struct FileParts {
     size_t connectivitySize = 0;
     const uint8_t* geometry = nullptr;
     size_t geometrySize = 0;
-    size_t headerBytes = 0;  // everything but the two payloads
+    const uint8_t* vertexOrder = nullptr;  // when header.keepsVertexOrder
+    size_t vertexOrderSize = 0;
+    size_t headerBytes = 0;  // everything but the payloads
 };
 
+// vertexOrder is written (as a fourth section) iff header.keepsVertexOrder.
 std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
-                               const std::vector<uint8_t>& geometry, size_t* headerBytes);
+                               const std::vector<uint8_t>& geometry, const std::vector<uint8_t>& vertexOrder,
+                               size_t* headerBytes);
 
 // Checks signature, version, section lengths and checksums, and every header
 // field's range; the payloads are returned as pointers into data.

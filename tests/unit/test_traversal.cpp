@@ -108,6 +108,25 @@ TEST(Traversal, SeveralComponentsAndIsolatedVertices) {
     expectRoundTrip(mesh, 2 * (3 + 2), 2);
 }
 
+TEST(VertexOrder, KeepOrderGivesBackTheInputNumbering) {
+    Mesh mesh = gridPatch(7, 5);
+    mesh.positions.insert(mesh.positions.end(), {3.5f, 2.5f, 1.f});  // an isolated vertex
+    EncodeOptions options;
+    options.keepVertexOrder = true;
+    const Encoded kept = encode(mesh, options);
+    const Decoded decoded = decode(kept.bytes);
+    const std::vector<int32_t> quantized = quantize(mesh.positions, makeGrid(mesh.positions, 12));
+    EXPECT_EQ(decoded.quantized, quantized);
+    EXPECT_EQ(orientedTriangles(decoded.mesh), orientedTriangles(mesh));
+    EXPECT_GT(decoded.stats.vertexOrderBytes, 0u);
+    for (size_t v = 0; v < kept.vertexOrder.size(); ++v) EXPECT_EQ(kept.vertexOrder[v], v);
+    // Without the option, the tree order differs from the input order here,
+    // and the file is smaller by exactly the order section and its framing.
+    const Encoded plain = encode(mesh);
+    EXPECT_LT(plain.bytes.size(), kept.bytes.size());
+    EXPECT_EQ(plain.stats.vertexOrderBytes, 0u);
+}
+
 TEST(Traversal, CullsEveryVertexOfAClosedMesh) {
     Traversal traversal(4, 4, nullptr);
     traversal.startComponent(0, 2, 1);

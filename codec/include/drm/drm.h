@@ -91,6 +91,9 @@ struct EncodeOptions {
     Predictor predictor = Predictor::Auto;
     bool curvature = false;                 // the paper's curvature correction
     GeometryCoder geometry = GeometryCoder::SpanningTree;
+    // Store the permutation back to the input vertex order (a fourth
+    // section), so decoded vertices keep their input indices.
+    bool keepVertexOrder = false;
     Levers levers;
     // Below 20000 faces, also encode with no levers and keep the smaller
     // file: on tiny regular meshes (a 288-vertex torus) learning the levers'
@@ -115,6 +118,7 @@ struct Stats {
     uint64_t headerBytes = 0;
     uint64_t connectivityBytes = 0;
     uint64_t geometryBytes = 0;
+    uint64_t vertexOrderBytes = 0;  // 0 unless the file keeps the input vertex order
     uint64_t totalBytes = 0;
     // rankHistogram[r] = number of rank codes equal to r (r = 0: boundary edge).
     std::vector<uint64_t> rankHistogram;
@@ -140,7 +144,8 @@ struct Encoded {
     // Quantized input positions (3 per vertex, input vertex order).
     std::vector<int32_t> quantized;
     // vertexOrder[i] = input vertex index of decoded vertex i. The geometry
-    // coder chooses the decoded order (the raw coder keeps the input order).
+    // coder chooses the decoded order; the raw coder and keepVertexOrder
+    // give the input order (identity).
     std::vector<uint32_t> vertexOrder;
     // For each input face, the rank code that created it (>= 1), or 0 for a
     // component's start triangle, which is stored in the header, not ranked.
