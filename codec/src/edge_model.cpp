@@ -25,8 +25,8 @@ constexpr int kDistanceContexts = kGapContext + 2;
 // With angle order, every distance context comes twice: the angle order's
 // first candidate is, or is not, also the nearest one.
 constexpr int kDisagreementOffset = kDistanceContexts;
-// Three: measured against 2 (worse on all but fandisk), 4 and 6 (worse on all).
-constexpr size_t kAngleOrdered = 3;
+// Four: 3 and 5 are within 1% of it; 2 and 6 lose 2-8% (paper models).
+constexpr size_t kAngleOrdered = 4;
 
 int confidenceBucket(const std::vector<RankedVertex>& nearest, bool fine) {
     static const int kFine[kMaxConfidenceBuckets - 1] = {400, 1600, 3600, 5625, 8100};  // 0.2 0.4 0.6 0.75 0.9

@@ -76,7 +76,7 @@ struct Levers {
     // Ranks are coded in contexts bucketed by how clear-cut the nearest
     // candidate is (ratio of the two nearest candidate distances).
     bool confidenceContext = true;
-    // The three nearest candidates are ranked by the angle they subtend over
+    // The four nearest candidates are ranked by the angle they subtend over
     // the edge, largest first (the apex of a Delaunay-like triangulation
     // sees the edge under the largest angle), those behind the edge last;
     // the rest by distance. With confidence contexts, whether this order
