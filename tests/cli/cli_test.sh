@@ -1,0 +1,198 @@
+#!/usr/bin/env bash
+# Runs one case of the `drm` command-line tests: cli_test.sh DRM DATA_DIR CASE
+#
+# Every failure case checks what a user relies on: exit code 1 (2 for usage
+# errors), no crash (code < 128), exactly one stderr line starting
+# "drm: error: ", and no output file left behind.
+set -uo pipefail
+drm=$1
+data=$2
+case_name=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+
+fail() { echo "FAIL [$case_name]: $*" >&2; exit 1; }
+
+# run EXPECTED_CODE ARGS...: runs drm, keeps stdout/stderr in out.txt/err.txt.
+run() {
+    local expected=$1
+    shift
+    "$drm" "$@" >out.txt 2>err.txt
+    local code=$?
+    [ "$code" -lt 128 ] || fail "drm $* crashed (exit $code): $(cat err.txt)"
+    [ "$code" -eq "$expected" ] || fail "drm $* exited $code, expected $expected; stderr: $(cat err.txt)"
+}
+
+# expect_error CODE OUTPUT ARGS...: drm fails with CODE, one error line, and
+# OUTPUT (if not "-") does not exist afterwards, nor any temporary file.
+expect_error() {
+    local code=$1 output=$2
+    shift 2
+    run "$code" "$@"
+    [ "$(wc -l <err.txt)" -eq 1 ] || fail "drm $* printed $(wc -l <err.txt) stderr lines: $(cat err.txt)"
+    grep -q '^drm: error: ' err.txt || fail "drm $* stderr does not start with 'drm: error: ': $(cat err.txt)"
+    if [ "$output" != "-" ]; then
+        [ ! -e "$output" ] || fail "drm $* left $output behind"
+    fi
+    ! ls ./*.tmp.* >/dev/null 2>&1 || fail "drm $* left a temporary file: $(ls ./*.tmp.*)"
+}
+
+case "$case_name" in
+help_and_version)
+    run 0 --version
+    grep -qE '^drm [0-9]+\.[0-9]+\.[0-9]+$' out.txt || fail "--version printed: $(cat out.txt)"
+    run 0 --help
+    cp out.txt overview.txt
+    for command in encode decode info verify ranks bench; do
+        grep -q "^  $command " overview.txt || fail "--help does not list $command"
+        run 0 help "$command"
+        grep -q "^usage: drm $command" out.txt || fail "help $command: $(head -1 out.txt)"
+        run 0 "$command" --help
+    done
+    ;;
+usage_errors)
+    expect_error 2 - 
+    expect_error 2 - frobnicate
+    expect_error 2 - help frobnicate
+    expect_error 2 out.drm encode "$data/torus.ply"
+    expect_error 2 out.drm encode "$data/torus.ply" out.drm --bits twelve
+    expect_error 2 out.drm encode "$data/torus.ply" out.drm --predictor psychic
+    expect_error 2 out.drm encode "$data/torus.ply" out.drm --curvature maybe
+    expect_error 2 out.drm encode "$data/torus.ply" out.drm --frobnicate
+    expect_error 2 - info
+    expect_error 1 out.drm encode "$data/torus.ply" out.drm --bits 99
+    ;;
+encode_decode_verify)
+    run 0 encode "$data/fandisk.ply" fandisk.drm
+    [ -s fandisk.drm ] || fail "encode wrote no file"
+    grep -q 'bits per vertex' out.txt || fail "encode summary: $(cat out.txt)"
+    run 0 decode fandisk.drm decoded.ply
+    head -c 3 decoded.ply | grep -q ply || fail "decode did not write PLY"
+    run 0 verify "$data/fandisk.ply"
+    grep -q 'lossless$' out.txt || fail "verify printed: $(cat out.txt)"
+    # The decoded mesh is a mesh like any other: it encodes and verifies too.
+    run 0 verify decoded.ply --bits 10 --predictor parallelogram
+    run 0 encode "$data/nefertiti.ply" n.drm --bits 14 --predictor midpoint --curvature on --geometry raw
+    run 0 verify "$data/blobby-3cc.ply" --geometry raw
+    run 0 verify "$data/elephant-with-holes.ply" --keep-vertex-order
+    run 0 encode "$data/torus.ply" ordered.drm --keep-vertex-order
+    run 0 info ordered.drm
+    grep -q '^vertex order bytes' out.txt || fail "info of a --keep-vertex-order file: $(cat out.txt)"
+    ;;
+info_json)
+    run 0 encode "$data/nefertiti.ply" n.drm
+    run 0 info n.drm
+    grep -q '^boundary edges *34$' out.txt || fail "info: $(cat out.txt)"
+    run 0 info n.drm --json
+    keys="vertices faces components boundary_edges bits predictor curvature connectivity_bytes geometry_bytes header_bytes total_bytes connectivity_bpv geometry_bpv total_bpv rank_histogram"
+    if command -v python3 >/dev/null; then
+        python3 - "$keys" out.txt <<'PY' || fail "info --json: $(cat out.txt)"
+import json, sys
+info = json.load(open(sys.argv[2]))
+missing = [k for k in sys.argv[1].split() if k not in info]
+assert not missing, missing
+assert info["vertices"] == 299 and info["boundary_edges"] == 34, info
+assert all(count > 0 for count in info["rank_histogram"].values())
+assert sum(info["rank_histogram"].values()) == info["faces"] - info["components"] + info["boundary_edges"]
+PY
+    else
+        for key in $keys; do grep -q "\"$key\":" out.txt || fail "info --json lacks $key"; done
+    fi
+    ;;
+ranks)
+    run 0 ranks "$data/torus.ply" torus-ranks.ply
+    grep -q 'rank 1' out.txt || fail "ranks printed: $(cat out.txt)"
+    head -c 400 torus-ranks.ply | grep -aq 'property uchar red' || fail "ranks output lacks face colours"
+    head -c 400 torus-ranks.ply | grep -aq 'property float quality' || fail "ranks output lacks face quality"
+    run 0 encode "$data/torus.ply" torus.drm
+    run 0 ranks torus.drm from-drm.ply
+    [ -s from-drm.ply ] || fail "ranks of a .drm wrote nothing"
+    expect_error 2 x.ply ranks torus.drm x.ply --bits 10
+    ;;
+bench)
+    run 0 bench "$data/torus.ply" "$data/nefertiti.ply" --csv b.csv --markdown b.md
+    grep -q 'nefertiti.ply .* ok$' out.txt || fail "bench table: $(cat out.txt)"
+    [ "$(wc -l <b.csv)" -eq 3 ] || fail "bench CSV: $(cat b.csv)"
+    grep -q '^mesh,vertices,triangles,' b.csv || fail "bench CSV header: $(head -1 b.csv)"
+    grep -q '^| nefertiti.ply | 299 | 562 |' b.md || fail "bench Markdown: $(cat b.md)"
+    grep -q '| 1.66 |' b.md || fail "bench Markdown lacks the paper's nefertiti rate: $(cat b.md)"
+    # A failing mesh gets its row, the others are still measured, exit code 1.
+    run 1 bench "$data/torus.ply" "$data/bad/fin.off" no-such-mesh.ply --csv c.csv
+    grep -q 'fin.off .*FAILED: .*non-manifold\|fin.off .*FAILED: ' out.txt || fail "bench fin row: $(cat out.txt)"
+    grep -q 'torus.ply .* ok$' out.txt || fail "bench torus row: $(cat out.txt)"
+    [ "$(wc -l <c.csv)" -eq 4 ] || fail "bench CSV with failures: $(cat c.csv)"
+    [ "$(wc -l <err.txt)" -eq 1 ] && grep -q '^drm: error: 2 of 3 meshes failed' err.txt || fail "bench stderr: $(cat err.txt)"
+    run 0 bench "$data" --bits 10
+    ;;
+missing_file)
+    expect_error 1 out.drm encode no-such-mesh.ply out.drm
+    expect_error 1 out.ply decode no-such-file.drm out.ply
+    expect_error 1 - info no-such-file.drm
+    expect_error 1 - verify no-such-mesh.ply
+    ;;
+empty_file)
+    : >empty.ply
+    : >empty.drm
+    expect_error 1 out.drm encode empty.ply out.drm
+    expect_error 1 out.ply decode empty.drm out.ply
+    expect_error 1 - info empty.drm
+    ;;
+zeros_file)
+    head -c 4096 /dev/zero >zeros.ply
+    head -c 4096 /dev/zero >zeros.drm
+    head -c 4096 /dev/zero >zeros.off
+    head -c 4096 /dev/zero >zeros.stl
+    head -c 4096 /dev/zero >zeros.obj
+    for mesh in zeros.ply zeros.off zeros.stl zeros.obj; do
+        expect_error 1 out.drm encode "$mesh" out.drm
+    done
+    expect_error 1 out.ply decode zeros.drm out.ply
+    expect_error 1 - info zeros.drm
+    ;;
+truncated_drm)
+    run 0 encode "$data/fandisk.ply" whole.drm
+    size=$(wc -c <whole.drm)
+    head -c $((size / 2)) whole.drm >half.drm
+    head -c $((size - 1)) whole.drm >minus-one.drm
+    head -c 12 whole.drm >header-only.drm
+    for file in half.drm minus-one.drm header-only.drm; do
+        expect_error 1 out.ply decode "$file" out.ply
+        expect_error 1 - info "$file"
+        expect_error 1 out.ply ranks "$file" out.ply
+    done
+    ;;
+non_manifold)
+    expect_error 1 out.drm encode "$data/bad/fin.off" out.drm
+    grep -q 'non-manifold edge' err.txt || fail "fin: $(cat err.txt)"
+    expect_error 1 - verify "$data/bad/fin.off"
+    ;;
+nan_coordinate)
+    expect_error 1 out.drm encode "$data/bad/nan.ply" out.drm
+    grep -qi 'nan\|finite' err.txt || fail "nan: $(cat err.txt)"
+    ;;
+bad_face_index)
+    expect_error 1 out.drm encode "$data/bad/bad-index.off" out.drm
+    expect_error 1 out.drm encode "$data/bad/bad-index.obj" out.drm
+    ;;
+truncated_off)
+    expect_error 1 out.drm encode "$data/bad/truncated.off" out.drm
+    head -c 40000 "$data/fandisk.ply" >truncated.ply
+    expect_error 1 out.drm encode truncated.ply out.drm
+    ;;
+existing_output_kept)
+    printf 'precious' >out.drm
+    expect_error 1 - encode "$data/bad/fin.off" out.drm
+    [ "$(cat out.drm)" = precious ] || fail "a failed encode changed the existing output"
+    expect_error 1 - encode no-such-mesh.ply out.drm
+    [ "$(cat out.drm)" = precious ] || fail "a failed encode changed the existing output"
+    printf 'precious' >out.ply
+    printf 'not a drm file' >bad.drm
+    expect_error 1 - decode bad.drm out.ply
+    [ "$(cat out.ply)" = precious ] || fail "a failed decode changed the existing output"
+    ;;
+*)
+    fail "unknown case"
+    ;;
+esac
+exit 0

@@ -1,0 +1,159 @@
+// Shared command-line helpers (see cli.h).
+#include "cli.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <iomanip>
+#include <sstream>
+#include <unistd.h>
+
+namespace drm {
+namespace cli {
+
+std::string Arguments::value(const std::string& option, const std::string& fallback) const {
+    auto it = options.find(option);
+    return it == options.end() ? fallback : it->second;
+}
+
+void Arguments::expectPositional(size_t min, size_t max, const std::string& what) const {
+    if (positional.size() < min)
+        throw UsageError("'" + command + "' needs " + what + " (see 'drm help " + command + "')");
+    if (positional.size() > max)
+        throw UsageError("'" + command + "' takes " + what + ", but got an extra argument '" +
+                         positional[max] + "' (see 'drm help " + command + "')");
+}
+
+Arguments parseArguments(const std::string& command, const std::vector<std::string>& args,
+                         const std::vector<std::string>& valued, const std::vector<std::string>& flags) {
+    Arguments parsed;
+    parsed.command = command;
+    auto listed = [](const std::vector<std::string>& names, const std::string& name) {
+        return std::find(names.begin(), names.end(), name) != names.end();
+    };
+    bool onlyPositional = false;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (onlyPositional || arg.size() < 2 || arg[0] != '-') {
+            parsed.positional.push_back(arg);
+            continue;
+        }
+        if (arg == "--") {
+            onlyPositional = true;
+            continue;
+        }
+        const size_t equals = arg.find('=');
+        const std::string name = arg.substr(0, equals);
+        if (listed(valued, name)) {
+            if (equals != std::string::npos) {
+                parsed.options[name] = arg.substr(equals + 1);
+            } else {
+                if (i + 1 == args.size()) throw UsageError("option " + name + " needs a value");
+                parsed.options[name] = args[++i];
+            }
+        } else if (listed(flags, name) && equals == std::string::npos) {
+            parsed.options[name] = "";
+        } else {
+            throw UsageError("unknown option '" + arg + "' for '" + command + "' (see 'drm help " + command + "')");
+        }
+    }
+    return parsed;
+}
+
+const std::vector<std::string>& encodeOptionNames() {
+    static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry"};
+    return names;
+}
+
+const std::vector<std::string>& encodeFlagNames() {
+    static const std::vector<std::string> names = {"--keep-vertex-order"};
+    return names;
+}
+
+drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
+    drm::EncodeOptions options;
+    options.keepVertexOrder = args.has("--keep-vertex-order");
+    if (args.has("--bits")) {
+        const std::string text = args.value("--bits");
+        errno = 0;
+        char* end = nullptr;
+        const long bits = std::strtol(text.c_str(), &end, 10);
+        if (text.empty() || *end != '\0' || errno != 0 || bits < -1000000 || bits > 1000000)
+            throw UsageError("--bits needs a whole number, not '" + text + "'");
+        options.bits = int(bits);
+    }
+    try {
+        if (args.has("--predictor")) options.predictor = drm::parsePredictor(args.value("--predictor"));
+        if (args.has("--geometry")) options.geometry = drm::parseGeometryCoder(args.value("--geometry"));
+    } catch (const drm::Error& e) {
+        throw UsageError(e.what());
+    }
+    if (args.has("--curvature")) {
+        const std::string onOff = args.value("--curvature");
+        if (onOff != "on" && onOff != "off") throw UsageError("--curvature takes on or off, not '" + onOff + "'");
+        options.curvature = onOff == "on";
+    }
+    return options;
+}
+
+void printNote(const std::string& note) { std::fprintf(stderr, "drm: note: %s\n", note.c_str()); }
+
+ProgressBar::ProgressBar(const std::string& label) : label_(label), enabled_(::isatty(STDERR_FILENO) == 1) {}
+
+ProgressBar::~ProgressBar() { clear(); }
+
+drm::Progress ProgressBar::callback() {
+    if (!enabled_) return drm::Progress();
+    return [this](double fraction, const char* stage) {
+        draw(fraction, stage);
+        return true;
+    };
+}
+
+void ProgressBar::draw(double fraction, const char* stage) {
+    const int permille = int(std::min(1.0, std::max(0.0, fraction)) * 1000.0);
+    if (permille == lastPermille_) return;
+    lastPermille_ = permille;
+    const int width = 30;
+    const int filled = permille * width / 1000;
+    std::fprintf(stderr, "\r\033[K%s [%s%s] %3d%% %s", label_.c_str(), std::string(size_t(filled), '#').c_str(),
+                 std::string(size_t(width - filled), '.').c_str(), permille / 10, stage ? stage : "");
+    std::fflush(stderr);
+    drawn_ = true;
+}
+
+void ProgressBar::clear() {
+    if (!drawn_) return;
+    std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+    drawn_ = false;
+    lastPermille_ = -1;
+}
+
+std::string fixed(double value, int decimals) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(decimals) << value;
+    return out.str();
+}
+
+std::string fileName(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string fileStem(const std::string& path) {
+    const std::string name = fileName(path);
+    const size_t dot = name.find_last_of('.');
+    return (dot == std::string::npos || dot == 0) ? name : name.substr(0, dot);
+}
+
+bool hasExtension(const std::string& path, const std::string& extension) {
+    if (path.size() < extension.size()) return false;
+    return std::equal(extension.begin(), extension.end(), path.end() - long(extension.size()),
+                      [](char a, char b) { return std::tolower((unsigned char)a) == std::tolower((unsigned char)b); });
+}
+
+}  // namespace cli
+}  // namespace drm

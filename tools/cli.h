@@ -1,0 +1,86 @@
+// What every `drm` subcommand shares: argument parsing, usage errors, the
+// progress bar, notes, and reading options into drm::EncodeOptions.
+#ifndef DRM_TOOLS_CLI_H
+#define DRM_TOOLS_CLI_H
+
+#include <drm/drm.h>
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace drm {
+namespace cli {
+
+// A mistake in how the command was called: exit code 2, not 1.
+class UsageError : public std::runtime_error {
+public:
+    explicit UsageError(const std::string& message) : std::runtime_error(message) {}
+};
+
+// A command's arguments: positional ones in order, options by name.
+struct Arguments {
+    std::string command;
+    std::vector<std::string> positional;
+    std::map<std::string, std::string> options;  // "--bits" -> "12"; flags -> ""
+
+    bool has(const std::string& option) const { return options.count(option) != 0; }
+    std::string value(const std::string& option, const std::string& fallback = "") const;
+    // Throws UsageError unless the positional count is within [min, max].
+    void expectPositional(size_t min, size_t max, const std::string& what) const;
+};
+
+// Splits argv[first..] into positional arguments and options. `valued` lists
+// options taking a value ("--bits 12" or "--bits=12"), `flags` options
+// without one. Anything else starting with "--" is a UsageError.
+Arguments parseArguments(const std::string& command, const std::vector<std::string>& args,
+                         const std::vector<std::string>& valued, const std::vector<std::string>& flags);
+
+// --bits, --predictor, --curvature, --geometry, --keep-vertex-order as given
+// (defaults otherwise).
+// Malformed values are UsageErrors; ranges are left to the codec.
+drm::EncodeOptions encodeOptionsFrom(const Arguments& args);
+
+// The options encodeOptionsFrom reads, for parseArguments: those taking a
+// value, and flags (--keep-vertex-order).
+const std::vector<std::string>& encodeOptionNames();
+const std::vector<std::string>& encodeFlagNames();
+
+// "drm: note: ..." on stderr.
+void printNote(const std::string& note);
+
+// A one-line progress bar on stderr, drawn only when stderr is a terminal.
+// Cleared when finished or destroyed (also while an exception unwinds).
+class ProgressBar {
+public:
+    explicit ProgressBar(const std::string& label);
+    ~ProgressBar();
+    ProgressBar(const ProgressBar&) = delete;
+    ProgressBar& operator=(const ProgressBar&) = delete;
+
+    drm::Progress callback();
+    void setLabel(const std::string& label) { label_ = label; }
+    void clear();
+
+private:
+    void draw(double fraction, const char* stage);
+
+    std::string label_;
+    bool enabled_;
+    bool drawn_ = false;
+    int lastPermille_ = -1;
+};
+
+// "12.345" with a fixed number of decimals.
+std::string fixed(double value, int decimals);
+
+// The last path component without its extension ("a/b/bunny.ply" -> "bunny").
+std::string fileStem(const std::string& path);
+std::string fileName(const std::string& path);
+bool hasExtension(const std::string& path, const std::string& extension);  // case-insensitive
+
+}  // namespace cli
+}  // namespace drm
+
+#endif  // DRM_TOOLS_CLI_H

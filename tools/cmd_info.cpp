@@ -1,0 +1,155 @@
+// drm info IN.drm [--json]: what a .drm file holds.
+#include "cli.h"
+#include "commands.h"
+
+#include <drm_vcg/file_io.h>
+
+#include <cstdio>
+#include <string>
+
+namespace drm {
+namespace cli {
+
+const char* const kInfoHelp =
+    "usage: drm info IN.drm [--json]\n"
+    "\n"
+    "Decodes IN.drm and prints its counts, options, section sizes, bits per\n"
+    "vertex and the histogram of rank codes (rank 0 = boundary edge).\n"
+    "\n"
+    "options:\n"
+    "  --json   one JSON object with the keys vertices, faces, components,\n"
+    "           boundary_edges, bits, predictor, curvature, geometry, levers,\n"
+    "           header_bytes, connectivity_bytes, geometry_bytes,\n"
+    "           vertex_order_bytes, total_bytes,\n"
+    "           connectivity_bpv, geometry_bpv, total_bpv, rank_histogram\n"
+    "           (rank -> count, ranks with no codes left out)\n";
+
+namespace {
+
+std::string jsonString(const std::string& text) {
+    std::string out = "\"";
+    for (unsigned char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += char(c);
+        } else if (c < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+            out += escaped;
+        } else {
+            out += char(c);
+        }
+    }
+    return out + "\"";
+}
+
+std::string leverList(const drm::Levers& levers) {
+    std::string out;
+    auto add = [&out](bool on, const char* name) {
+        if (on) out += (out.empty() ? "" : ", ") + std::string(name);
+    };
+    add(levers.topologicalFilter, "topological filter");
+    add(levers.gapClosing, "gap closing");
+    add(levers.confidenceContext, "confidence contexts");
+    add(levers.angleOrder, "angle order");
+    return out.empty() ? "none (the paper's method)" : out;
+}
+
+uint64_t totalCodes(const drm::Stats& stats) {
+    uint64_t total = 0;
+    for (uint64_t count : stats.rankHistogram) total += count;
+    return total;
+}
+
+void printJson(const std::string& path, const drm::Stats& s) {
+    auto number = [](uint64_t v) { return std::to_string(v); };
+    std::string out = "{\n";
+    auto field = [&out](const std::string& key, const std::string& value, bool last = false) {
+        out += "  " + jsonString(key) + ": " + value + (last ? "\n" : ",\n");
+    };
+    auto boolean = [](bool b) { return std::string(b ? "true" : "false"); };
+    field("file", jsonString(path));
+    field("vertices", number(s.vertices));
+    field("faces", number(s.faces));
+    field("components", number(s.components));
+    field("boundary_edges", number(s.boundaryEdges));
+    field("bits", std::to_string(s.bits));
+    field("predictor", jsonString(drm::predictorName(s.predictor)));
+    field("curvature", boolean(s.curvature));
+    field("geometry", jsonString(drm::geometryCoderName(s.geometry)));
+    field("levers", "{\"topological_filter\": " + boolean(s.levers.topologicalFilter) +
+                        ", \"gap_closing\": " + boolean(s.levers.gapClosing) +
+                        ", \"confidence_context\": " + boolean(s.levers.confidenceContext) +
+                        ", \"angle_order\": " + boolean(s.levers.angleOrder) + "}");
+    field("header_bytes", number(s.headerBytes));
+    field("connectivity_bytes", number(s.connectivityBytes));
+    field("geometry_bytes", number(s.geometryBytes));
+    field("vertex_order_bytes", number(s.vertexOrderBytes));
+    field("total_bytes", number(s.totalBytes));
+    field("connectivity_bpv", fixed(s.connectivityBitsPerVertex(), 6));
+    field("geometry_bpv", fixed(s.geometryBitsPerVertex(), 6));
+    field("total_bpv", fixed(s.totalBitsPerVertex(), 6));
+    std::string histogram = "{";
+    for (size_t rank = 0; rank < s.rankHistogram.size(); ++rank) {
+        if (s.rankHistogram[rank] == 0) continue;
+        histogram += (histogram.size() > 1 ? ", " : "") + jsonString(std::to_string(rank)) + ": " +
+                     number(s.rankHistogram[rank]);
+    }
+    field("rank_histogram", histogram + "}", true);
+    out += "}\n";
+    std::fputs(out.c_str(), stdout);
+}
+
+void printText(const std::string& path, const drm::Stats& s) {
+    auto row = [](const char* key, const std::string& value) { std::printf("%-20s %s\n", key, value.c_str()); };
+    auto bytesAndRate = [](uint64_t bytes, double bpv) {
+        return std::to_string(bytes) + " (" + fixed(bpv, 3) + " bits per vertex)";
+    };
+    row("file", path);
+    row("vertices", std::to_string(s.vertices));
+    row("faces", std::to_string(s.faces));
+    row("components", std::to_string(s.components));
+    row("boundary edges", std::to_string(s.boundaryEdges));
+    row("bits per axis", std::to_string(s.bits));
+    row("predictor", drm::predictorName(s.predictor));
+    row("curvature", s.curvature ? "on" : "off");
+    row("geometry coder", drm::geometryCoderName(s.geometry));
+    row("levers", leverList(s.levers));
+    row("header bytes", std::to_string(s.headerBytes));
+    row("connectivity bytes", bytesAndRate(s.connectivityBytes, s.connectivityBitsPerVertex()));
+    row("geometry bytes", bytesAndRate(s.geometryBytes, s.geometryBitsPerVertex()));
+    if (s.vertexOrderBytes > 0) row("vertex order bytes", std::to_string(s.vertexOrderBytes));
+    row("total bytes", bytesAndRate(s.totalBytes, s.totalBitsPerVertex()));
+    const uint64_t codes = totalCodes(s);
+    std::printf("rank codes           %llu (rank: count, share)\n", (unsigned long long)codes);
+    for (size_t rank = 0; rank < s.rankHistogram.size(); ++rank) {
+        if (s.rankHistogram[rank] == 0) continue;
+        std::printf("  %6zu %10llu %7s%%%s\n", rank, (unsigned long long)s.rankHistogram[rank],
+                    fixed(codes ? 100.0 * double(s.rankHistogram[rank]) / double(codes) : 0.0, 2).c_str(),
+                    rank == 0 ? "  (boundary edges)" : "");
+    }
+}
+
+}  // namespace
+
+int runInfo(const std::vector<std::string>& args) {
+    const Arguments parsed = parseArguments("info", args, {}, {"--json"});
+    parsed.expectPositional(1, 1, "one .drm file");
+    const std::string& input = parsed.positional[0];
+    const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
+    drm::Decoded decoded;
+    {
+        ProgressBar bar("reading " + fileName(input));
+        try {
+            decoded = drm::decode(bytes, bar.callback());
+        } catch (const drm::Error& e) {
+            throw drm::Error("cannot decode " + input + ": " + e.what());
+        }
+    }
+    if (parsed.has("--json")) printJson(input, decoded.stats);
+    else printText(input, decoded.stats);
+    return 0;
+}
+
+}  // namespace cli
+}  // namespace drm

@@ -1,0 +1,106 @@
+// drm ranks IN OUT.ply: faces coloured by the distance rank that created
+// them, for looking at where the coder pays (the paper's Figure 1).
+#include "cli.h"
+#include "commands.h"
+#include "mesh_input.h"
+
+#include <drm_vcg/file_io.h>
+#include <drm_vcg/mesh_io.h>
+#include <drm_vcg/rank_palette.h>
+
+#include <cstdio>
+
+namespace drm {
+namespace cli {
+
+const char* const kRanksHelp =
+    "usage: drm ranks IN OUT.ply [--bits N] [--predictor P] [--curvature on|off] [--geometry G]\n"
+    "                 [--keep-vertex-order]\n"
+    "\n"
+    "Writes IN as a PLY mesh whose faces are coloured by the rank code that\n"
+    "created them (dark grey: a component's start triangle, pale blue-grey:\n"
+    "rank 1, green: 2, orange: 3, red: 4 and above); the rank itself is stored\n"
+    "as face quality. Prints how many faces each colour has.\n"
+    "\n"
+    "IN is a mesh (it is encoded with the options given, as 'drm encode' would)\n"
+    "or a .drm file (it is decoded, and the decoded mesh is encoded again with\n"
+    "the file's own options to recover the ranks; options cannot be given).\n";
+
+int runRanks(const std::vector<std::string>& args) {
+    const Arguments parsed = parseArguments("ranks", args, encodeOptionNames(), encodeFlagNames());
+    parsed.expectPositional(2, 2, "an input mesh or .drm file and an output .ply file");
+    const std::string& input = parsed.positional[0];
+    const std::string& output = parsed.positional[1];
+
+    drm::Mesh mesh;
+    drm::EncodeOptions options;
+    std::vector<std::string> notes;
+    std::vector<uint64_t> fileHistogram;  // of a .drm input
+    ProgressBar bar("ranking " + fileName(input));
+    if (hasExtension(input, ".drm")) {
+        std::vector<std::string> encodeOptions = encodeOptionNames();
+        encodeOptions.insert(encodeOptions.end(), encodeFlagNames().begin(), encodeFlagNames().end());
+        for (const std::string& option : encodeOptions)
+            if (parsed.has(option))
+                throw UsageError(option + " cannot be given with a .drm input: its own options are used");
+        const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
+        drm::Decoded decoded;
+        try {
+            decoded = drm::decode(bytes, bar.callback());
+        } catch (const drm::Error& e) {
+            throw drm::Error("cannot decode " + input + ": " + e.what());
+        }
+        mesh = std::move(decoded.mesh);
+        fileHistogram = decoded.stats.rankHistogram;
+        options.bits = decoded.stats.bits;
+        options.predictor = decoded.stats.predictor;
+        options.curvature = decoded.stats.curvature;
+        options.geometry = decoded.stats.geometry;
+        options.levers = decoded.stats.levers;
+        options.keepVertexOrder = decoded.stats.vertexOrderBytes > 0;
+        options.tryWithoutLevers = false;  // the levers are the file's
+    } else {
+        options = encodeOptionsFrom(parsed);
+        drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
+        mesh = std::move(loaded.mesh);
+        notes = std::move(loaded.notes);
+    }
+    options.progress = bar.callback();
+    drm::Encoded encoded;
+    try {
+        encoded = drm::encode(mesh, options);
+    } catch (const drm::Error& e) {
+        throw drm::Error("cannot encode " + input + ": " + e.what());
+    }
+    bar.clear();
+    // Re-encoding re-quantizes positions that are already on the grid, which
+    // should give back the file's ranks; say so if it did not.
+    if (!fileHistogram.empty() && fileHistogram != encoded.stats.rankHistogram)
+        notes.push_back("encoding the decoded mesh again gave other ranks than the file's; the colours show the new ones");
+
+    drm::vcgio::FaceAttributes attributes;
+    attributes.rgb.reserve(3 * mesh.faceCount());
+    attributes.quality.reserve(mesh.faceCount());
+    std::vector<uint64_t> facesPerBucket(drm::vcgio::kRankBucketCount, 0);
+    for (uint32_t rank : encoded.faceRank) {
+        const drm::vcgio::RankColour colour = drm::vcgio::rankColour(rank);
+        attributes.rgb.insert(attributes.rgb.end(), {colour.r, colour.g, colour.b});
+        attributes.quality.push_back(float(rank));
+        ++facesPerBucket[size_t(drm::vcgio::rankBucket(rank))];
+    }
+    drm::vcgio::savePly(output, mesh, &attributes);
+
+    printNotes(notes);
+    std::printf("%s -> %s: %zu faces coloured by the rank that created them\n", input.c_str(), output.c_str(),
+                mesh.faceCount());
+    for (int bucket = 0; bucket < drm::vcgio::kRankBucketCount; ++bucket) {
+        const drm::vcgio::RankColour colour = drm::vcgio::rankBucketColour(bucket);
+        const double share = mesh.faceCount() ? 100.0 * double(facesPerBucket[size_t(bucket)]) / double(mesh.faceCount()) : 0.0;
+        std::printf("  %-15s #%02x%02x%02x %10llu %7s%%\n", drm::vcgio::rankBucketName(bucket), colour.r, colour.g,
+                    colour.b, (unsigned long long)facesPerBucket[size_t(bucket)], fixed(share, 2).c_str());
+    }
+    return 0;
+}
+
+}  // namespace cli
+}  // namespace drm
