@@ -63,7 +63,7 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 }
 
 const std::vector<std::string>& encodeOptionNames() {
-    static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry"};
+    static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers"};
     return names;
 }
 
@@ -87,6 +87,11 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
     try {
         if (args.has("--predictor")) options.predictor = drm::parsePredictor(args.value("--predictor"));
         if (args.has("--geometry")) options.geometry = drm::parseGeometryCoder(args.value("--geometry"));
+        if (args.has("--levers")) {
+            // Named levers are used as given: no automatic fallback to none.
+            options.levers = drm::parseLevers(args.value("--levers"));
+            options.tryWithoutLevers = false;
+        }
     } catch (const drm::Error& e) {
         throw UsageError(e.what());
     }

@@ -37,7 +37,7 @@ struct Arguments {
 Arguments parseArguments(const std::string& command, const std::vector<std::string>& args,
                          const std::vector<std::string>& valued, const std::vector<std::string>& flags);
 
-// --bits, --predictor, --curvature, --geometry, --keep-vertex-order as given
+// --bits, --predictor, --curvature, --geometry, --levers, --keep-vertex-order as given
 // (defaults otherwise).
 // Malformed values are UsageErrors; ranges are left to the codec.
 drm::EncodeOptions encodeOptionsFrom(const Arguments& args);

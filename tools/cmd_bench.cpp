@@ -19,7 +19,7 @@ namespace cli {
 
 const char* const kBenchHelp =
     "usage: drm bench FILES...|DIR [--csv F] [--markdown F] [--bits N] [--predictor P]\n"
-    "                 [--curvature on|off] [--geometry G] [--keep-vertex-order]\n"
+    "                 [--curvature on|off] [--geometry G] [--levers L] [--keep-vertex-order]\n"
     "\n"
     "Encodes and decodes each mesh (every .ply, .obj, .off and .stl file of a\n"
     "directory, in name order) and prints one row per mesh: vertices,\n"

@@ -11,7 +11,7 @@ namespace drm {
 namespace cli {
 
 const char* const kEncodeHelp =
-    "usage: drm encode IN OUT.drm [--bits N] [--predictor P] [--curvature on|off] [--geometry G]\n"
+    "usage: drm encode IN OUT.drm [--bits N] [--predictor P] [--curvature on|off] [--geometry G] [--levers L]\n"
     "                  [--keep-vertex-order]\n"
     "\n"
     "Compresses the triangle mesh IN (PLY, OBJ, OFF or STL) into OUT.drm.\n"
@@ -24,6 +24,9 @@ const char* const kEncodeHelp =
     "  --predictor P     apex predictor: auto, parallelogram or midpoint (default auto)\n"
     "  --curvature on|off  the paper's curvature correction (default off)\n"
     "  --geometry G      vertex coder: tree or raw (default tree)\n"
+    "  --levers L        additions to the paper's method: all (default), none, or\n"
+    "                    a list of filter, gap, context, angle (see docs/format.md);\n"
+    "                    by default meshes under 20000 faces also try none\n"
     "  --keep-vertex-order  also store the input's vertex order, so that decoding\n"
     "                    gives vertices back in input order (costs bits)\n";
 

@@ -14,7 +14,7 @@ namespace drm {
 namespace cli {
 
 const char* const kRanksHelp =
-    "usage: drm ranks IN OUT.ply [--bits N] [--predictor P] [--curvature on|off] [--geometry G]\n"
+    "usage: drm ranks IN OUT.ply [--bits N] [--predictor P] [--curvature on|off] [--geometry G] [--levers L]\n"
     "                 [--keep-vertex-order]\n"
     "\n"
     "Writes IN as a PLY mesh whose faces are coloured by the rank code that\n"
@@ -23,8 +23,8 @@ const char* const kRanksHelp =
     "as face quality. Prints how many faces each colour has.\n"
     "\n"
     "IN is a mesh (it is encoded with the options given, as 'drm encode' would)\n"
-    "or a .drm file (it is decoded, and the decoded mesh is encoded again with\n"
-    "the file's own options to recover the ranks; options cannot be given).\n";
+    "or a .drm file (it is decoded, and each face gets the rank stored for it\n"
+    "in the file; options cannot be given).\n";
 
 int runRanks(const std::vector<std::string>& args) {
     const Arguments parsed = parseArguments("ranks", args, encodeOptionNames(), encodeFlagNames());
@@ -33,11 +33,11 @@ int runRanks(const std::vector<std::string>& args) {
     const std::string& output = parsed.positional[1];
 
     drm::Mesh mesh;
-    drm::EncodeOptions options;
+    std::vector<uint32_t> faceRank;
     std::vector<std::string> notes;
-    std::vector<uint64_t> fileHistogram;  // of a .drm input
-    ProgressBar bar("ranking " + fileName(input));
+    ProgressBar bar("ranks");
     if (hasExtension(input, ".drm")) {
+        // A .drm file's own ranks: the decoder reports the code of every face.
         std::vector<std::string> encodeOptions = encodeOptionNames();
         encodeOptions.insert(encodeOptions.end(), encodeFlagNames().begin(), encodeFlagNames().end());
         for (const std::string& option : encodeOptions)
@@ -51,38 +51,26 @@ int runRanks(const std::vector<std::string>& args) {
             throw drm::Error("cannot decode " + input + ": " + e.what());
         }
         mesh = std::move(decoded.mesh);
-        fileHistogram = decoded.stats.rankHistogram;
-        options.bits = decoded.stats.bits;
-        options.predictor = decoded.stats.predictor;
-        options.curvature = decoded.stats.curvature;
-        options.geometry = decoded.stats.geometry;
-        options.levers = decoded.stats.levers;
-        options.keepVertexOrder = decoded.stats.vertexOrderBytes > 0;
-        options.tryWithoutLevers = false;  // the levers are the file's
+        faceRank = std::move(decoded.faceRank);
     } else {
-        options = encodeOptionsFrom(parsed);
+        drm::EncodeOptions options = encodeOptionsFrom(parsed);
         drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
         mesh = std::move(loaded.mesh);
         notes = std::move(loaded.notes);
-    }
-    options.progress = bar.callback();
-    drm::Encoded encoded;
-    try {
-        encoded = drm::encode(mesh, options);
-    } catch (const drm::Error& e) {
-        throw drm::Error("cannot encode " + input + ": " + e.what());
+        options.progress = bar.callback();
+        try {
+            faceRank = drm::encode(mesh, options).faceRank;
+        } catch (const drm::Error& e) {
+            throw drm::Error("cannot encode " + input + ": " + e.what());
+        }
     }
     bar.clear();
-    // Re-encoding re-quantizes positions that are already on the grid, which
-    // should give back the file's ranks; say so if it did not.
-    if (!fileHistogram.empty() && fileHistogram != encoded.stats.rankHistogram)
-        notes.push_back("encoding the decoded mesh again gave other ranks than the file's; the colours show the new ones");
 
     drm::vcgio::FaceAttributes attributes;
     attributes.rgb.reserve(3 * mesh.faceCount());
     attributes.quality.reserve(mesh.faceCount());
     std::vector<uint64_t> facesPerBucket(drm::vcgio::kRankBucketCount, 0);
-    for (uint32_t rank : encoded.faceRank) {
+    for (uint32_t rank : faceRank) {
         const drm::vcgio::RankColour colour = drm::vcgio::rankColour(rank);
         attributes.rgb.insert(attributes.rgb.end(), {colour.r, colour.g, colour.b});
         attributes.quality.push_back(float(rank));

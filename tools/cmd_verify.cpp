@@ -10,7 +10,7 @@ namespace drm {
 namespace cli {
 
 const char* const kVerifyHelp =
-    "usage: drm verify IN [--bits N] [--predictor P] [--curvature on|off] [--geometry G]\n"
+    "usage: drm verify IN [--bits N] [--predictor P] [--curvature on|off] [--geometry G] [--levers L]\n"
     "                 [--keep-vertex-order]\n"
     "\n"
     "Encodes the mesh IN in memory, decodes the result and checks that nothing\n"

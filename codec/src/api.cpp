@@ -1,4 +1,5 @@
 // Small public helpers: names, parsing and derived figures.
+#include <algorithm>
 #include <string>
 
 #include "drm/drm.h"
@@ -34,6 +35,38 @@ GeometryCoder parseGeometryCoder(const std::string& name) {
     for (GeometryCoder g : {GeometryCoder::SpanningTree, GeometryCoder::Raw})
         if (name == geometryCoderName(g)) return g;
     throw Error("unknown geometry coder '" + name + "' (use tree or raw)");
+}
+
+Levers parseLevers(const std::string& list) {
+    if (list == "all") return Levers();
+    Levers levers = Levers::none();
+    if (list == "none") return levers;
+    size_t start = 0;
+    while (start <= list.size()) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        const std::string name = list.substr(start, comma - start);
+        if (name == "filter") levers.topologicalFilter = true;
+        else if (name == "gap") levers.gapClosing = true;
+        else if (name == "context") levers.confidenceContext = true;
+        else if (name == "angle") levers.angleOrder = true;
+        else
+            throw Error("unknown lever '" + name + "' (use all, none, or a list of filter, gap, context, angle)");
+        start = comma + 1;
+    }
+    return levers;
+}
+
+std::string leversName(const Levers& l) {
+    if (l.topologicalFilter && l.gapClosing && l.confidenceContext && l.angleOrder) return "all";
+    std::string names;
+    auto add = [&](bool on, const char* name) {
+        if (on) names += (names.empty() ? "" : ",") + std::string(name);
+    };
+    add(l.topologicalFilter, "filter");
+    add(l.gapClosing, "gap");
+    add(l.confidenceContext, "context");
+    add(l.angleOrder, "angle");
+    return names.empty() ? "none" : names;
 }
 
 namespace {

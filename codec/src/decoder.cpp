@@ -49,6 +49,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
             throw Error("corrupt file: more components than the header's " + std::to_string(faceCount) + " faces");
         try {
             traversal.startComponent(start[0], start[1], start[2]);
+            result.faceRank.push_back(0);
         } catch (const Error& e) {
             throw Error("corrupt file: component " + std::to_string(c) + ": " + e.what());
         }
@@ -73,6 +74,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
                 const uint32_t apex = model.vertexOfRank(rank, edge);
                 model.resolved(apex);
                 traversal.attachApex(edge, apex);
+                result.faceRank.push_back(rank);
             } catch (const Error& e) {
                 throw Error("corrupt file: face " + std::to_string(traversal.triangleCount()) + ": " + e.what());
             }

@@ -86,6 +86,12 @@ struct Levers {
     static Levers none() { return Levers{false, false, false, false}; }
 };
 
+// "all", "none", or a comma-separated list of filter, gap, context, angle.
+// Throws Error on anything else.
+Levers parseLevers(const std::string& list);
+// The inverse: "all", "none" or the list of those on.
+std::string leversName(const Levers& levers);
+
 struct EncodeOptions {
     int bits = 12;                          // quantization bits per axis, 1..21
     Predictor predictor = Predictor::Auto;
@@ -157,6 +163,9 @@ struct Decoded {
     std::vector<int32_t> quantized;  // grid coordinates, 3 per vertex
     Grid grid;
     Stats stats;
+    // For each decoded face, the rank code that created it (0 for a
+    // component's start triangle), as in Encoded::faceRank.
+    std::vector<uint32_t> faceRank;
 };
 
 // Encodes a mesh. Throws Error when the mesh cannot be represented (empty,
