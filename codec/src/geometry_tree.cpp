@@ -154,10 +154,15 @@ void encodeChildCount(RangeEncoder& coder, GeometryModels& models, uint32_t coun
         return;
     }
     models.childCount.encode(coder, kDirectChildCounts);
-    const uint32_t w = count - kDirectChildCounts + 1;  // Elias gamma, w >= 1
+    // Elias gamma of w >= 1: n - 1 zero bits, a one bit, then the n - 1 bits
+    // below the leading one. Each piece is coded exactly as the decoder reads
+    // it (one bit at a time, then one chunk): in a range coder a 4-bit value
+    // and four single bits are different codes.
+    const uint32_t w = count - kDirectChildCounts + 1;
     const int n = bitLength(w);
-    encodeWide(coder, 0, n - 1);
-    encodeWide(coder, w, n);
+    for (int zero = 0; zero < n - 1; ++zero) coder.encodeBits(0, 1);
+    coder.encodeBits(1, 1);
+    encodeWide(coder, w, n - 1);
 }
 
 uint32_t decodeChildCount(RangeDecoder& coder, GeometryModels& models) {
@@ -352,9 +357,14 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits) 
 }
 
 std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
-    // Every vertex costs at least a child count and a predictor choice; a
-    // count far beyond what the bytes could hold is refused before allocating.
-    if (vertexCount > uint64_t(size) * 64 + 64)
+    // Every vertex but a root codes five adaptive symbols (a predictor choice,
+    // three residual lengths, a child count). A table of k symbols never gives
+    // one a probability above 1 - (k-1)/65568, so these cost at least 0.00176
+    // bits per vertex together: at most ~4550 vertices per byte. A count far
+    // beyond that is refused before anything is allocated. (Coincident
+    // vertices really do code this densely: fandisk at 1 bit is 118 per byte.)
+    constexpr uint64_t kMaxVerticesPerByte = 8192;
+    if (vertexCount > (uint64_t(size) + 8) * kMaxVerticesPerByte)
         throw Error("corrupt file: " + std::to_string(vertexCount) + " vertices cannot fit in a geometry section of " +
                     std::to_string(size) + " bytes");
     const size_t n = size_t(vertexCount);
