@@ -1,0 +1,32 @@
+// The codec options a MeshLab user can set, as MeshLab parameters.
+//
+// Shared by the save dialog (io_drm) and the rank filter (filter_drm) so both
+// offer the same names, ranges and defaults as `drm encode` / `drm ranks`;
+// the names are what .mlx filter scripts refer to.
+#ifndef DRM_MESHLAB_ENCODE_PARAMETERS_H
+#define DRM_MESHLAB_ENCODE_PARAMETERS_H
+
+#include <common/interfaces.h>
+
+#include <drm/drm.h>
+
+namespace drm_meshlab {
+
+extern const char* const kBitsParameter;             // RichInt, 1..21
+extern const char* const kPredictorParameter;        // RichEnum: auto, parallelogram, midpoint
+extern const char* const kKeepVertexOrderParameter;  // RichBool
+
+// Adds the quantization bits and the predictor, with the codec's defaults.
+void addQuantizationAndPredictor(RichParameterList& parameters);
+// Adds "keep vertex order" (off by default, as in `drm encode`).
+void addKeepVertexOrder(RichParameterList& parameters);
+
+// The codec's default options with those of the parameters present in
+// `parameters` applied. Throws drm::Error naming the parameter when a value
+// is out of range, so a bad .mlx value is refused with a sentence, not by
+// an assertion deep in the codec.
+drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters);
+
+}  // namespace drm_meshlab
+
+#endif  // DRM_MESHLAB_ENCODE_PARAMETERS_H

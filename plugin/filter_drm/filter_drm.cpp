@@ -1,0 +1,110 @@
+#include "filter_drm/filter_drm.h"
+
+#include "bridge/encode_parameters.h"
+#include "bridge/encoding.h"
+#include "bridge/progress_bridge.h"
+#include "filter_drm/rank_colouring.h"
+
+#include <drm/drm.h>
+#include <drm_vcg/vcg_mesh.h>
+
+#include <new>
+
+DrmFilterPlugin::DrmFilterPlugin() {
+    typeList << FP_RANK_COLOURS;
+    for (FilterIDType type : typeList) actionList << new QAction(filterName(type), this);
+}
+
+QString DrmFilterPlugin::pluginName() const { return "FilterDRM"; }
+
+// The name is how .mlx scripts refer to the filter: it must stay unique
+// across MeshLab and must not change.
+QString DrmFilterPlugin::filterName(FilterIDType filter) const {
+    switch (filter) {
+        case FP_RANK_COLOURS:
+            return "Colorize Faces by Distance Rank";
+    }
+    return QString();
+}
+
+QString DrmFilterPlugin::filterInfo(FilterIDType filter) const {
+    switch (filter) {
+        case FP_RANK_COLOURS:
+            return "Compresses the mesh's connectivity with distance-ranked coding (the .drm format) and "
+                   "colours every face by the rank code that created it: "
+                   "<span style='color:#404040'>dark grey</span> for a component's start triangle, "
+                   "<span style='color:#8c9aae'>pale blue-grey</span> for rank 1 (the nearest candidate "
+                   "closed the triangle: almost free), <span style='color:#4caf50'>green</span> for 2, "
+                   "<span style='color:#f5a623'>orange</span> for 3 and <span style='color:#d62728'>red</span> "
+                   "for 4 and above. The rank is also stored as face quality. The log shows the connectivity "
+                   "cost in bits per vertex and the rank histogram. The mesh must be manifold and "
+                   "consistently oriented; it is not changed otherwise.<br>"
+                   "Same colours as the <tt>drm ranks</tt> command.<br><br>"
+                   "See: <br><i>P. Marais, J. Gain, D. Shreiner</i><br>"
+                   "<b>\"Distance-Ranked Connectivity Compression of Triangle Meshes\"</b><br>"
+                   "Computer Graphics Forum, 2007 (Figure 1).";
+    }
+    return QString();
+}
+
+// FaceColoring puts the filter in Filters > Color Creation and Processing, and
+// makes MeshLab switch the view to per-face colour after it ran.
+MeshFilterInterface::FilterClass DrmFilterPlugin::getClass(QAction* /*action*/) {
+    return MeshFilterInterface::FaceColoring;
+}
+
+int DrmFilterPlugin::getRequirements(QAction* /*action*/) {
+    return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+}
+
+// Only faces are needed; colour and quality are created by the filter.
+int DrmFilterPlugin::getPreConditions(QAction* /*action*/) const { return MeshModel::MM_FACENUMBER; }
+
+int DrmFilterPlugin::postCondition(QAction* /*action*/) const {
+    return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+}
+
+MeshFilterInterface::FILTER_ARITY DrmFilterPlugin::filterArity(QAction* /*action*/) const {
+    return MeshFilterInterface::SINGLE_MESH;
+}
+
+void DrmFilterPlugin::initParameterSet(QAction* /*action*/, MeshModel& /*m*/, RichParameterList& parameters) {
+    drm_meshlab::addQuantizationAndPredictor(parameters);
+}
+
+bool DrmFilterPlugin::fail(const std::string& message) {
+    errorMessage = QString::fromStdString(message);
+    Log(GLLogStream::WARNING, message);
+    return false;
+}
+
+bool DrmFilterPlugin::applyFilter(QAction* /*action*/, MeshDocument& md, const RichParameterList& parameters,
+                                  vcg::CallBackPos* cb) {
+    MeshModel* m = md.mm();
+    if (m == nullptr) return fail("Colorize Faces by Distance Rank: there is no current mesh");
+    const std::string name = m->label().toStdString();
+    try {
+        drm::EncodeOptions options = drm_meshlab::encodeOptionsFrom(parameters);
+        options.progress = drm_meshlab::progressTo(cb);
+        const drm::Mesh mesh = drm::vcgio::fromVcg(m->cm);
+        const drm::Encoded encoded = drm_meshlab::encodeMesh(mesh, options);
+
+        // MeshLab enables the requirements before running a filter; this
+        // keeps the filter correct when called some other way.
+        m->updateDataMask(MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY);
+        const std::vector<uint64_t> facesPerBucket = drm_meshlab::colourFacesByRank(m->cm, encoded.faceRank);
+
+        Log("Distance ranks of %s: connectivity %s bpv (%llu bytes for %llu vertices); %s",
+            name.c_str(), drm_meshlab::twoDecimals(encoded.stats.connectivityBitsPerVertex()).c_str(),
+            (unsigned long long)encoded.stats.connectivityBytes, (unsigned long long)encoded.stats.vertices,
+            drm_meshlab::statsSummary(encoded.stats).c_str());
+        for (const std::string& line : drm_meshlab::rankReport(facesPerBucket, encoded.stats)) Log(line);
+        return true;
+    } catch (const drm::Error& e) {
+        return fail("Colorize Faces by Distance Rank: cannot rank " + name + ": " + e.what());
+    } catch (const std::bad_alloc&) {
+        return fail("Colorize Faces by Distance Rank: not enough memory to rank " + name);
+    }
+}
+
+MESHLAB_PLUGIN_NAME_EXPORTER(DrmFilterPlugin)

@@ -1,0 +1,91 @@
+# Shared by batch-compress.sh and batch-decompress.sh (sourced, not run).
+# shellcheck shell=bash disable=SC2034,SC2154  # variables shared with the sourcing script
+#
+# Each file goes through meshlabserver (MeshLab 2020.09 with drm's plugins:
+# $MESHLABSERVER, else the meshlabserver on PATH). meshlabserver exits 0
+# even when a save fails, so success is judged by the output file: it is
+# written under a temporary name, checked to exist and be non-empty, and
+# only then renamed, so an older file of the same name never passes for a
+# new one and is never replaced by a failed run.
+set -euo pipefail
+
+batch_fail() { echo "$batch_name: $*" >&2; exit 1; }
+
+batch_usage() {
+  echo "usage: $batch_name DIR OUTDIR" >&2
+  echo "  $1" >&2
+  echo "  meshlabserver: \$MESHLABSERVER, else the one on PATH (MeshLab 2020.09 with drm's plugins:" >&2
+  echo "  scripts/meshlab-user-install.sh PREFIX, then MESHLABSERVER=PREFIX/bin/meshlabserver)" >&2
+  exit 2
+}
+
+# batch_setup DIR OUTDIR: checks the arguments and finds meshlabserver.
+batch_setup() {
+  [ -d "$1" ] || batch_fail "$1 is not a folder"
+  mkdir -p "$2" || batch_fail "cannot create $2"
+  # Absolute paths: meshlabserver changes its working folder to each file's
+  # while it loads and saves, so nothing should depend on ours.
+  batch_in=$(cd "$1" && pwd)
+  batch_out=$(cd "$2" && pwd)
+  batch_server=${MESHLABSERVER:-$(command -v meshlabserver || true)}
+  if [ -z "$batch_server" ] || [ ! -x "$batch_server" ]; then
+    batch_fail "meshlabserver not found: set MESHLABSERVER or install MeshLab 2020.09 (scripts/setup.sh)"
+  fi
+  # meshlabserver needs an X display even without a window.
+  batch_display=()
+  if [ -z "${DISPLAY:-}" ]; then
+    command -v xvfb-run >/dev/null || batch_fail "no DISPLAY and no xvfb-run (apt-get install xvfb xauth)"
+    batch_display=(xvfb-run -a)
+  fi
+  batch_files=0
+  batch_bytes_in=0
+  batch_bytes_out=0
+}
+
+batch_size() { stat -c %s "$1"; }
+
+# batch_convert IN OUT [MESHLABSERVER OPTIONS...]: one file; stops the batch
+# with meshlabserver's own explanation when OUT does not come out.
+batch_convert() {
+  local in=$1 out=$2
+  shift 2
+  local tmp log status=0
+  tmp="$(dirname "$out")/.batch-$$-$(basename "$out")"  # same extension: it picks the plugin
+  log=$(mktemp)
+  rm -f "$tmp"
+  "${batch_display[@]}" "$batch_server" -i "$in" -o "$tmp" "$@" >"$log" 2>&1 || status=$?
+  if [ ! -s "$tmp" ]; then
+    rm -f "$tmp"
+    local reason
+    reason=$(grep -E '^drm: error: ' "$log" | sed 's/^drm: error: //' | head -3 || true)
+    if [ -z "$reason" ] && grep -q 'does not correspond to any supported format\|^Error encountered while opening file' "$log"; then
+      reason="this meshlabserver does not know the file type; are drm's plugins installed? ($batch_server)"
+    fi
+    [ -n "$reason" ] || reason=$(grep -iE 'error|fail|not been saved|not possible' "$log" | head -5 || true)
+    [ -n "$reason" ] || reason="no output (meshlabserver said: $(tail -3 "$log" | tr '\n' ' '))"
+    rm -f "$log"
+    reason=${reason//"$(basename "$tmp")"/"$(basename "$out")"}  # the user knows the final name
+    if [ "$status" -ge 128 ] && [ "$status" -ne 255 ]; then reason="meshlabserver crashed (exit $status). $reason"; fi
+    batch_fail "stopped at $(basename "$in"): $reason"
+  fi
+  rm -f "$log"
+  mv -f "$tmp" "$out"
+  local size_in size_out
+  size_in=$(batch_size "$in")
+  size_out=$(batch_size "$out")
+  batch_files=$((batch_files + 1))
+  batch_bytes_in=$((batch_bytes_in + size_in))
+  batch_bytes_out=$((batch_bytes_out + size_out))
+  printf '%s -> %s: %d -> %d bytes (%s)\n' "$(basename "$in")" "$(basename "$out")" "$size_in" "$size_out" \
+    "$(batch_ratio "$size_in" "$size_out")"
+}
+
+# "4.1:1" or "1:3.2" style: how much smaller or larger the output is.
+batch_ratio() {
+  awk -v a="$1" -v b="$2" 'BEGIN { if (b == 0) print "-"; else if (a >= b) printf "%.1f:1", a / b; else printf "1:%.1f", b / a }'
+}
+
+batch_summary() {
+  printf '%s: %d files, %d -> %d bytes (%s), output in %s\n' "$batch_name" "$batch_files" "$batch_bytes_in" \
+    "$batch_bytes_out" "$(batch_ratio "$batch_bytes_in" "$batch_bytes_out")" "$batch_out"
+}

@@ -1,0 +1,188 @@
+#!/usr/bin/env bash
+# Runs one case of the MeshLab plugin tests:
+#   meshlab_test.sh SOURCE_DIR PREFIX PLUGIN_DIR DRM COMPARE_MESHES CASE
+#
+# The plugins run inside Debian's real MeshLab 2020.09: meshlabserver from a
+# private prefix (scripts/meshlab-user-install.sh), under xvfb-run because it
+# needs an X display. Their output is held to the `drm` tool's (DRM) with
+# compare_meshes: identical positions, faces and face colours.
+# meshlabserver exits 0 after a failed save and 255 after a failed open or
+# filter; anything from 128 to 254 is a signal, i.e. a crash.
+set -uo pipefail
+shopt -s nullglob
+src=$1
+prefix=$2
+plugins=$3
+drm=$4
+compare=$5
+case_name=$6
+data="$src/tests/data"
+server="$prefix/bin/meshlabserver"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+
+fail() { echo "FAIL [$case_name]: $*" >&2; exit 1; }
+
+# server EXPECTED_CODE ARGS...: runs meshlabserver, output in server.txt.
+server() {
+    local expected=$1
+    shift
+    xvfb-run -a "$server" "$@" >server.txt 2>&1
+    local code=$?
+    if [ "$code" -ge 128 ] && [ "$code" -ne 255 ]; then
+        fail "meshlabserver $* crashed (exit $code): $(tail -5 server.txt)"
+    fi
+    [ "$code" -eq "$expected" ] || fail "meshlabserver $* exited $code, expected $expected: $(tail -5 server.txt)"
+}
+
+# same A B [OPTIONS]: compare_meshes must say IDENTICAL; prints its verdict.
+same() {
+    "$compare" "$@" >compare.txt 2>&1 || fail "compare_meshes $*: $(cat compare.txt)"
+    echo "$case_name: $(basename "$1") vs $(basename "$2"): $(cat compare.txt)"
+}
+
+no_temporary_files() {
+    local leftovers=("$1"/*.tmp.* "$1"/.*.tmp.*)
+    [ ${#leftovers[@]} -eq 0 ] || fail "a temporary file was left in $1: ${leftovers[*]}"
+}
+
+[ "$case_name" = install ] || [ -x "$server" ] || fail "$server missing: the meshlab.install test sets it up"
+
+case "$case_name" in
+install)
+    # Twice: the second run must succeed and change nothing that matters.
+    for run in 1 2; do
+        bash "$src/scripts/meshlab-user-install.sh" "$prefix" "$plugins" >install.txt 2>&1 ||
+            fail "meshlab-user-install.sh (run $run): $(cat install.txt)"
+    done
+    lib="$prefix/lib/x86_64-linux-gnu/meshlab"
+    for exe in meshlab meshlabserver; do
+        if [ ! -x "$prefix/bin/$exe" ] || [ -L "$prefix/bin/$exe" ]; then fail "$prefix/bin/$exe is not a copied executable"; fi
+    done
+    [ -L "$lib/libmeshlab-common.so" ] || fail "libmeshlab-common.so is not linked"
+    [ -L "$lib/plugins/libio_base.so" ] || fail "the stock plugins are not linked"
+    for p in libio_drm.so libfilter_drm.so; do
+        cmp -s "$plugins/$p" "$lib/plugins/$p" || fail "$p is not the freshly built one"
+    done
+    # The dump lists every filter MeshLab loaded: ours must be there, which
+    # also shows MeshLab's plugin sanity checks accepted it.
+    server 0 -d "$work/filters.txt"
+    [ "$(grep -c "Colorize Faces by Distance Rank" filters.txt)" -eq 1 ] || fail "the filter is not listed exactly once in meshlabserver's filter list"
+    grep -qF "Current Plugins Dir is: $(cd "$lib/plugins" && pwd -P)" server.txt || fail "meshlabserver did not use the prefix's plugins: $(head -3 server.txt)"
+    echo "install: private MeshLab in $prefix, filter listed"
+    ;;
+export_import)
+    # Meshes with one closed surface, holes, several components, loose
+    # triangles. Export through the plugin: the file must be what `drm
+    # encode` writes (same default options, same floats read from the PLY).
+    # Import through the plugin: the mesh must be what `drm decode` gives.
+    for name in fandisk elephant-with-holes blobby-3cc soup; do
+        server 0 -i "$data/$name.ply" -o "$work/$name-meshlab.drm"
+        [ -s "$name-meshlab.drm" ] || fail "$name-meshlab.drm was not written: $(tail -5 server.txt)"
+        ! grep -q "^drm: note:" server.txt || fail "a note about lost attributes for a plain mesh: $(grep '^drm: note:' server.txt)"
+        "$drm" encode "$data/$name.ply" "$work/$name-cli.drm" >/dev/null || fail "drm encode $name failed"
+        cmp "$name-meshlab.drm" "$name-cli.drm" >/dev/null || fail "the plugin's $name.drm differs from drm encode's"
+        echo "export_import: $name-meshlab.drm is byte-identical to drm encode's ($(stat -c %s "$name-meshlab.drm") bytes)"
+        server 0 -i "$work/$name-meshlab.drm" -o "$work/$name-meshlab.ply"
+        [ -s "$name-meshlab.ply" ] || fail "$name-meshlab.ply was not written: $(tail -5 server.txt)"
+        "$drm" decode "$work/$name-meshlab.drm" "$work/$name-cli.ply" >/dev/null || fail "drm decode $name failed"
+        same "$work/$name-meshlab.ply" "$work/$name-cli.ply"
+    done
+    ;;
+colorize)
+    # The .mlx filter script against `drm ranks` on the same mesh.
+    for name in fandisk elephant-with-holes; do
+        server 0 -i "$data/$name.ply" -o "$work/$name-ranks.ply" -m fc fq -s "$src/resources/colorize-by-rank.mlx"
+        [ -s "$name-ranks.ply" ] || fail "$name-ranks.ply was not written: $(tail -5 server.txt)"
+        grep -q "Distance ranks of $name.ply: connectivity [0-9.]* bpv" server.txt || fail "no bpv in the log: $(cat server.txt)"
+        grep -q "^Rank codes (0 = boundary edge): " server.txt || fail "no rank histogram in the log"
+        echo "colorize: $(grep -o "Distance ranks of [^;]*" server.txt | head -1)"
+        "$drm" ranks "$data/$name.ply" "$work/$name-cli-ranks.ply" >/dev/null || fail "drm ranks $name failed"
+        same "$work/$name-ranks.ply" "$work/$name-cli-ranks.ply" --face-colours --face-quality
+    done
+    # Saving the coloured mesh as .drm says what stays behind.
+    server 0 -i "$work/fandisk-ranks.ply" -o "$work/coloured.drm"
+    [ -s coloured.drm ] || fail "coloured.drm was not written: $(tail -5 server.txt)"
+    grep -q "^drm: note: coloured.drm does not keep the mesh's face colours and face quality" server.txt ||
+        fail "no note about the face colours and quality left behind: $(tail -5 server.txt)"
+    echo "colorize: $(grep '^drm: note:' server.txt)"
+    ;;
+colorize_bad_parameter)
+    sed 's/name="QuantizationBits" type="RichInt" value="12"/name="QuantizationBits" type="RichInt" value="0"/' \
+        "$src/resources/colorize-by-rank.mlx" >bad-bits.mlx
+    grep -q 'value="0"' bad-bits.mlx || fail "could not make the bad script"
+    server 255 -i "$data/torus.ply" -o "$work/out.ply" -m fc -s "$work/bad-bits.mlx"
+    grep -q "QuantizationBits must be between 1 and 21, not 0" server.txt || fail "no clear message: $(tail -5 server.txt)"
+    [ ! -e out.ply ] || fail "out.ply was written after a failed filter"
+    echo "colorize_bad_parameter: $(grep -o 'QuantizationBits must.*' server.txt | head -1)"
+    ;;
+colorize_non_manifold)
+    server 255 -i "$data/bad/fin.off" -o "$work/out.ply" -m fc -s "$src/resources/colorize-by-rank.mlx"
+    grep -q "cannot rank fin.off: .*edge" server.txt || fail "no message naming the edge: $(tail -5 server.txt)"
+    echo "colorize_non_manifold: $(grep -o 'cannot rank.*' server.txt | head -1 | cut -c1-160)"
+    ;;
+corrupt_drm)
+    "$drm" encode "$data/torus.ply" "$work/good.drm" >/dev/null || fail "drm encode failed"
+    head -c 200 good.drm >truncated.drm
+    head -c 3000 /dev/urandom >garbage.drm
+    : >empty.drm
+    # Flip a byte in the middle: the decoder must refuse it or decode
+    # something, never crash.
+    cp good.drm flipped.drm
+    printf '\xff' | dd of=flipped.drm bs=1 seek=$(( $(stat -c %s good.drm) / 2 )) conv=notrunc 2>/dev/null
+    for f in truncated garbage empty; do
+        server 255 -i "$work/$f.drm" -o "$work/$f.ply"
+        grep -q "^drm: error: cannot open $f.drm: " server.txt || fail "$f.drm: no message: $(tail -5 server.txt)"
+        [ ! -e "$f.ply" ] || fail "$f.ply was written"
+        echo "corrupt_drm: $(grep '^drm: error:' server.txt | head -1)"
+    done
+    xvfb-run -a "$server" -i "$work/flipped.drm" -o "$work/flipped.ply" >server.txt 2>&1
+    code=$?
+    [ "$code" -eq 0 ] || [ "$code" -eq 255 ] || fail "flipped.drm: meshlabserver exited $code: $(tail -5 server.txt)"
+    echo "corrupt_drm: flipped byte -> exit $code: $(grep '^drm: error:' server.txt | head -1)"
+    ;;
+non_manifold_export)
+    # Refused with a message naming the edge; an existing file is untouched.
+    echo "previous contents" >out.drm
+    server 0 -i "$data/bad/fin.off" -o "$work/out.drm"
+    grep -q "has NOT been saved" server.txt || fail "meshlabserver did not report the failed save: $(tail -5 server.txt)"
+    grep -q "^drm: error: cannot save out.drm: .*edge 0->1" server.txt || fail "no message naming the edge: $(tail -5 server.txt)"
+    [ "$(cat out.drm)" = "previous contents" ] || fail "the existing out.drm was overwritten"
+    no_temporary_files "$work"
+    echo "non_manifold_export: $(grep '^drm: error:' server.txt | cut -c1-160)..."
+    ;;
+batch)
+    export MESHLABSERVER="$server"
+    mkdir in
+    cp "$data/fandisk.ply" "$data/torus.ply" "$data/nefertiti.ply" in/
+    bash "$src/resources/batch-compress.sh" in packed >batch.txt 2>&1 || fail "batch-compress: $(cat batch.txt)"
+    cat batch.txt
+    grep -q "^batch-compress: 3 files" batch.txt || fail "no summary line"
+    bash "$src/resources/batch-decompress.sh" packed unpacked >batch.txt 2>&1 || fail "batch-decompress: $(cat batch.txt)"
+    cat batch.txt
+    grep -q "^batch-decompress: 3 files" batch.txt || fail "no summary line"
+    for name in fandisk torus nefertiti; do
+        "$drm" decode "packed/$name.drm" "$work/$name-cli.ply" >/dev/null || fail "drm decode $name.drm failed"
+        same "$work/unpacked/$name.ply" "$work/$name-cli.ply"
+    done
+    # A failing file stops the batch with the reason, exit 1.
+    cp "$data/bad/fin.off" in/
+    bash "$src/resources/batch-compress.sh" in packed2 >batch.txt 2>&1
+    code=$?
+    [ "$code" -eq 1 ] || fail "batch-compress with fin.off exited $code: $(cat batch.txt)"
+    grep -q "^batch-compress: stopped at fin.off: cannot save fin.drm: " batch.txt || fail "unclear stop: $(cat batch.txt)"
+    [ ! -e packed2/fin.drm ] || fail "packed2/fin.drm exists"
+    leftovers=(packed2/.batch-*)
+    [ ${#leftovers[@]} -eq 0 ] || fail "a temporary file was left: ${leftovers[*]}"
+    head -c 100 packed/torus.drm >packed/torus.drm.part && mv packed/torus.drm.part packed/broken.drm
+    bash "$src/resources/batch-decompress.sh" packed unpacked2 >batch.txt 2>&1
+    code=$?
+    [ "$code" -eq 1 ] || fail "batch-decompress with broken.drm exited $code: $(cat batch.txt)"
+    grep -q "^batch-decompress: stopped at broken.drm: cannot open broken.drm: " batch.txt || fail "unclear stop: $(cat batch.txt)"
+    echo "batch: failures stop with: $(grep -h 'stopped at' batch.txt | cut -c1-120)"
+    ;;
+*)
+    fail "unknown case"
+    ;;
+esac
