@@ -42,7 +42,7 @@ batch_setup() {
   batch_bytes_out=0
 }
 
-batch_size() { stat -c %s "$1"; }
+batch_size() { stat -L -c %s "$1"; }  # -L: the size of what a symlink points to
 
 # batch_convert IN OUT [MESHLABSERVER OPTIONS...]: one file; stops the batch
 # with meshlabserver's own explanation when OUT does not come out.
