@@ -14,6 +14,7 @@ packages=(
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev
   xvfb xauth dpkg-dev imagemagick xdotool x11-apps
   clang libfuzzer-14-dev libclang-rt-14-dev
+  libdraco-dev draco libmeshoptimizer-dev libopenctm-dev libzstd-dev   # drm-peer-bench only
 )
 
 as_root() {
