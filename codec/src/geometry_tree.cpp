@@ -102,24 +102,6 @@ struct GeometryModels {
     }
 };
 
-void encodeWide(RangeEncoder& coder, uint32_t value, int count) {
-    while (count > 0) {
-        const int chunk = std::min(count, 16);
-        count -= chunk;
-        coder.encodeBits(value >> count, chunk);
-    }
-}
-
-uint32_t decodeWide(RangeDecoder& coder, int count) {
-    uint32_t value = 0;
-    while (count > 0) {
-        const int chunk = std::min(count, 16);
-        count -= chunk;
-        value = (value << chunk) | coder.decodeBits(chunk);
-    }
-    return value;
-}
-
 // Exp-Golomb-like: the bit length of |r| as an adaptive symbol, then the sign
 // and the bits below the leading one as plain bits.
 void encodeResidual(RangeEncoder& coder, GeometryModels& models, int axis, int32_t r) {
@@ -132,7 +114,7 @@ void encodeResidual(RangeEncoder& coder, GeometryModels& models, int axis, int32
     if (n == 1) return;
     // Residuals are peaked: within a bit length the smaller half is likelier.
     models.topBit[size_t(axis * kResidualClasses + n)].encode(coder, (magnitude >> (n - 2)) & 1);
-    encodeWide(coder, magnitude, n - 2);
+    coder.encodeWideBits(magnitude, n - 2);
 }
 
 int32_t decodeResidual(RangeDecoder& coder, GeometryModels& models, int axis) {
@@ -143,7 +125,7 @@ int32_t decodeResidual(RangeDecoder& coder, GeometryModels& models, int axis) {
     uint32_t magnitude = 1;
     if (n > 1) {
         const uint32_t top = models.topBit[size_t(axis * kResidualClasses + n)].decode(coder);
-        magnitude = (((uint32_t(1) << 1) | top) << (n - 2)) | decodeWide(coder, n - 2);
+        magnitude = (((uint32_t(1) << 1) | top) << (n - 2)) | uint32_t(coder.decodeWideBits(n - 2));
     }
     return negative ? -int32_t(magnitude) : int32_t(magnitude);
 }
@@ -162,7 +144,7 @@ void encodeChildCount(RangeEncoder& coder, GeometryModels& models, uint32_t coun
     const int n = bitLength(w);
     for (int zero = 0; zero < n - 1; ++zero) coder.encodeBits(0, 1);
     coder.encodeBits(1, 1);
-    encodeWide(coder, w, n - 1);
+    coder.encodeWideBits(w, n - 1);
 }
 
 uint32_t decodeChildCount(RangeDecoder& coder, GeometryModels& models) {
@@ -171,7 +153,7 @@ uint32_t decodeChildCount(RangeDecoder& coder, GeometryModels& models) {
     int zeros = 0;
     while (coder.decodeBits(1) == 0)
         if (++zeros > 31) throw Error("corrupt file: a child count in the geometry section is too long");
-    const uint64_t w = (uint64_t(1) << zeros) | decodeWide(coder, zeros);
+    const uint64_t w = (uint64_t(1) << zeros) | coder.decodeWideBits(zeros);
     return uint32_t(std::min<uint64_t>(w - 1 + kDirectChildCounts, 0xFFFFFFFFu));
 }
 
@@ -329,7 +311,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits) 
         walk.enter(self, &parent, &sibling);
         parentOf[self] = parent;
         if (parent == kNone) {
-            for (int32_t c : {at.x, at.y, at.z}) encodeWide(coder, uint32_t(c), bits);
+            for (int32_t c : {at.x, at.y, at.z}) coder.encodeWideBits(uint32_t(c), bits);
         } else {
             const Predictions p = predict(pos, parentOf, self, parent, sibling);
             int best = 0;
@@ -382,7 +364,10 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
         Point at;
         if (parent == kNone) {
             if (promised != 0) throw Error("corrupt file: the geometry tree is inconsistent");
-            at = {int32_t(decodeWide(coder, bits)), int32_t(decodeWide(coder, bits)), int32_t(decodeWide(coder, bits))};
+            const int32_t x = int32_t(coder.decodeWideBits(bits));  // in order: x, y, z
+            const int32_t y = int32_t(coder.decodeWideBits(bits));
+            const int32_t z = int32_t(coder.decodeWideBits(bits));
+            at = {x, y, z};
         } else {
             --promised;
             const uint32_t choice = models.choiceModel().decode(coder);

@@ -116,4 +116,22 @@ size_t RangeDecoder::bytesPastEnd() const {
     return invented > kImpliedTailBytes ? invented - kImpliedTailBytes : 0;
 }
 
+void RangeEncoder::encodeWideBits(uint64_t value, int count) {
+    while (count > 0) {
+        const int chunk = count < 16 ? count : 16;
+        count -= chunk;
+        encodeBits(uint32_t(value >> count), chunk);
+    }
+}
+
+uint64_t RangeDecoder::decodeWideBits(int count) {
+    uint64_t value = 0;
+    while (count > 0) {
+        const int chunk = count < 16 ? count : 16;
+        count -= chunk;
+        value = (value << chunk) | decodeBits(chunk);
+    }
+    return value;
+}
+
 }  // namespace drm

@@ -25,6 +25,11 @@ public:
     // Codes the low `count` bits of value (count in 0..16), each bit costing
     // exactly one bit; higher bits of value are ignored.
     void encodeBits(uint32_t value, int count);
+    // Codes the low `count` bits of value (count in 0..64) as plain bits, in
+    // chunks of at most 16, most significant chunk first. Decode with
+    // decodeWideBits(count): the chunking must match exactly, since in a
+    // range coder one 4-bit value and four single bits are different codes.
+    void encodeWideBits(uint64_t value, int count);
     // Flushes the coder and hands over the bytes. The encoder is spent.
     // The stream omits its last three bytes, which are always zero: the
     // decoder supplies them itself.
@@ -55,6 +60,8 @@ public:
     void consume(uint32_t cumFreq, uint32_t freq, uint32_t totalFreq);
     // Inverse of RangeEncoder::encodeBits.
     uint32_t decodeBits(int count);
+    // Inverse of RangeEncoder::encodeWideBits.
+    uint64_t decodeWideBits(int count);
 
     // Zero bytes invented past the end of the data, not counting the three
     // bytes finish() leaves off. After the last symbol of an intact stream

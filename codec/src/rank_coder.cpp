@@ -145,12 +145,7 @@ void RankEncoder::put(uint32_t rank, int extraContext) {
     const uint64_t w = uint64_t(rank) - kRankDirectSymbols + 1;
     const int length = bitLength(w);
     escapeLengths_.encode(coder_, uint32_t(length - 1));
-    // The bits below the leading one, most significant chunk first.
-    for (int left = length - 1; left > 0;) {
-        const int chunk = left < 16 ? left : 16;
-        left -= chunk;
-        coder_.encodeBits(uint32_t(w >> left), chunk);
-    }
+    coder_.encodeWideBits(w, length - 1);  // the bits below the leading one
 }
 
 std::vector<uint8_t> RankEncoder::finish() { return coder_.finish(); }
@@ -164,12 +159,7 @@ uint32_t RankDecoder::get(int extraContext) {
     ranks_.observed(previousClass_, rank);
     if (rank == kEscape) {
         const int length = int(escapeLengths_.decode(coder_)) + 1;
-        uint64_t w = 1;
-        for (int left = length - 1; left > 0;) {
-            const int chunk = left < 16 ? left : 16;
-            left -= chunk;
-            w = (w << chunk) | coder_.decodeBits(chunk);
-        }
+        const uint64_t w = (uint64_t(1) << (length - 1)) | coder_.decodeWideBits(length - 1);
         const uint64_t wide = w - 1 + kRankDirectSymbols;
         if (wide > UINT32_MAX)
             throw Error("corrupt connectivity stream: an escaped rank does not fit in 32 bits");

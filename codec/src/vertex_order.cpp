@@ -36,11 +36,7 @@ std::vector<uint8_t> encodeVertexOrder(const std::vector<uint32_t>& order) {
         const uint64_t z = zigzag(int64_t(index) - previous - 1);
         const int n = bitLength(z);
         lengths.encode(coder, uint32_t(n));
-        for (int left = n - 1; left > 0;) {
-            const int chunk = left < 16 ? left : 16;
-            left -= chunk;
-            coder.encodeBits(uint32_t(z >> left), chunk);
-        }
+        coder.encodeWideBits(z, n - 1);  // the bits below the leading one
         previous = index;
     }
     return coder.finish();
@@ -54,12 +50,7 @@ std::vector<uint32_t> decodeVertexOrder(const uint8_t* data, size_t size, uint64
     int64_t previous = -1;
     for (uint32_t& index : order) {
         const int n = int(lengths.decode(coder));
-        uint64_t z = n == 0 ? 0 : 1;
-        for (int left = n - 1; left > 0;) {
-            const int chunk = left < 16 ? left : 16;
-            left -= chunk;
-            z = (z << chunk) | coder.decodeBits(chunk);
-        }
+        const uint64_t z = n == 0 ? 0 : (uint64_t(1) << (n - 1)) | coder.decodeWideBits(n - 1);
         const int64_t value = previous + 1 + unzigzag(z);
         if (value < 0 || uint64_t(value) >= vertexCount || seen[size_t(value)])
             throw Error("corrupt file: the vertex order section is not a permutation");
