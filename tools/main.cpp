@@ -90,7 +90,11 @@ int dispatch(const std::vector<std::string>& args) {
 
 int main(int argc, char** argv) {
     try {
-        return dispatch(std::vector<std::string>(argv + 1, argv + argc));
+        const int code = dispatch(std::vector<std::string>(argv + 1, argv + argc));
+        // Output that never reached its destination (a full disk, a closed
+        // pipe) is a failure, not a success.
+        if (std::fflush(stdout) != 0 || std::ferror(stdout)) return fail(1, "cannot write to standard output");
+        return code;
     } catch (const drm::cli::UsageError& e) {
         return fail(2, e.what());
     } catch (const drm::Error& e) {
@@ -99,5 +103,7 @@ int main(int argc, char** argv) {
         return fail(1, "out of memory");
     } catch (const std::exception& e) {
         return fail(1, e.what());
+    } catch (...) {
+        return fail(1, "internal error: an unknown exception");
     }
 }

@@ -31,9 +31,9 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
 
     const size_t vertexCount = size_t(header.vertexCount);
     const size_t faceCount = size_t(header.faceCount);
-    // The face count is not trusted for allocation beyond what the vertex
-    // count makes plausible; tables grow if a real mesh needs more.
-    const size_t expectedFaces = std::min<size_t>(faceCount, 4 * vertexCount + 16);
+    // The face count is only a claim until the ranks deliver the faces: the
+    // tables start small and grow as faces are decoded.
+    const size_t expectedFaces = std::min<size_t>(faceCount, size_t(1) << 16);
     VertexIndex candidates(result.quantized);
     Traversal traversal(vertexCount, expectedFaces, &candidates);
     EdgeModel model(result.quantized, header.grid.bits, header.predictor, header.curvature, header.levers,

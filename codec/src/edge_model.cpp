@@ -77,6 +77,7 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     f.preferred = levers_.gapClosing ? gapClosingVertex(edge, grid_, admissible_) : kNoPreference;
     f.context = 0;
     f.nearest.clear();
+    disagreement_ = Disagreement();  // only an edge where the orders disagree teaches resolved()
     if (f.preferred != kNoPreference) {
         if (levers_.confidenceContext) {
             const std::vector<RankedVertex>& first = ranks_.nearest(f.prediction, 1, edge);
@@ -87,7 +88,6 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     if (!levers_.confidenceContext && !levers_.angleOrder) return f;
     f.nearest = ranks_.nearest(f.prediction, levers_.angleOrder ? kAngleOrdered : 2, edge);
     if (levers_.confidenceContext) f.context = confidenceBucket(f.nearest, fineBuckets_);
-    disagreement_ = Disagreement();
     if (levers_.angleOrder && f.nearest.size() >= 2) {
         const uint32_t nearestByDistance = f.nearest[0].second;
         std::vector<RankedVertex> byAngle = f.nearest;

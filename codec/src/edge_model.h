@@ -37,6 +37,9 @@ public:
     // Both use the forecast made last, for the same edge.
     uint32_t rankOf(uint32_t apex, const OpenEdge& edge);
     uint32_t vertexOfRank(uint32_t rank, const OpenEdge& edge);
+    // Whether v may close edge (the encoder checks its true apex against the
+    // rule the decoder will apply).
+    bool admissible(uint32_t v, const OpenEdge& edge) const { return admissible_(v, edge); }
     // Tells the model the apex of the last forecast edge, once known, so it
     // can learn which candidate order serves this mesh.
     void resolved(uint32_t apex);

@@ -90,8 +90,9 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
             if (apex == HalfEdgeMap::kAbsent) {
                 traversal.closeAsBoundary(edge);
             } else {
-                if (traversal.isCulled(apex))
-                    throw Error("internal error: the apex of face " + std::to_string(face) + " was culled too early");
+                if (!model.admissible(apex, edge))
+                    throw Error("internal error: the apex of face " + std::to_string(face) +
+                                " is not a candidate; the file would not decode");
                 rank = model.rankOf(apex, edge);
                 model.resolved(apex);
                 traversal.attachApex(edge, apex);
@@ -170,6 +171,9 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     prepared.renumbered.positions.resize(mesh.positions.size());  // only its size matters to the checks
     prepared.topology = checkMesh(prepared.renumbered);
 
+    if (options.predictor != Predictor::Auto && options.predictor != Predictor::Parallelogram &&
+        options.predictor != Predictor::Midpoint)
+        throw Error("unknown predictor " + std::to_string(int(options.predictor)));
     prepared.predictor = options.predictor;
     if (prepared.predictor == Predictor::Auto) {
         progress.stage("choosing predictor", 0.04);

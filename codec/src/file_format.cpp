@@ -68,6 +68,12 @@ FileHeader decodeHeader(ByteReader& in) {
         if (!std::isfinite(o)) throw Error("corrupt file: the bounding box origin is not finite");
     if (!std::isfinite(h.grid.step) || !(h.grid.step > 0))
         throw Error("corrupt file: the grid step is not a positive number");
+    for (double o : h.grid.origin) {
+        // Every decoded position (origin + q * step, as a float) must be finite.
+        const double far = o + double(gridMax(h.grid.bits)) * h.grid.step;
+        if (!std::isfinite(float(far)) || !std::isfinite(float(o)))
+            throw Error("corrupt file: the bounding box does not fit in single-precision floats");
+    }
     h.vertexCount = in.count("vertex count", 0xFFFFFFFEull);
     if (h.vertexCount == 0) throw Error("corrupt file: the vertex count is zero");
     h.faceCount = in.count("face count", 0x55555554ull);

@@ -351,8 +351,13 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
                     std::to_string(size) + " bytes");
     const size_t n = size_t(vertexCount);
     const int32_t top = gridMax(bits);
-    std::vector<Point> pos(n);
-    std::vector<uint32_t> parentOf(n, kNone);
+    // The count is only a claim until the stream delivers the vertices:
+    // tables grow as they are decoded, so a short or garbage section fails
+    // before memory is committed to it.
+    std::vector<Point> pos;
+    std::vector<uint32_t> parentOf;
+    pos.reserve(std::min<size_t>(n, size_t(1) << 16));
+    parentOf.reserve(pos.capacity());
     RangeDecoder coder(data, size);
     GeometryModels models;
     TreeWalk walk;
@@ -360,7 +365,7 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     for (uint32_t self = 0; self < n; ++self) {
         uint32_t parent = kNone, sibling = kNone;
         walk.enter(self, &parent, &sibling);
-        parentOf[self] = parent;
+        parentOf.push_back(parent);
         Point at;
         if (parent == kNone) {
             if (promised != 0) throw Error("corrupt file: the geometry tree is inconsistent");
@@ -382,7 +387,7 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
                 throw Error("corrupt file: geometry vertex " + std::to_string(self) + " falls outside the grid");
             at = {int32_t(x), int32_t(y), int32_t(z)};
         }
-        pos[self] = at;
+        pos.push_back(at);
         const uint32_t childCount = decodeChildCount(coder, models);
         promised += childCount;
         if (promised > n - 1 - self)

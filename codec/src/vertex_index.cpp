@@ -1,5 +1,6 @@
 #include "vertex_index.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -68,6 +69,9 @@ void VertexIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out)
 
 double VertexIndex::radiusHolding(Vec3 q, size_t k) const {
     if (!impl_->tree || k == 0 || present_ < k) return std::numeric_limits<double>::infinity();
+    // FLANN's k-nearest result set inserts in O(k); beyond a few dozen
+    // neighbours a smaller estimate, grown by the caller, is much cheaper.
+    k = std::min<size_t>(k, 48);
     const float query[3] = {float(q.x), float(q.y), float(q.z)};
     flann::KNNSimpleResultSet<float> nearest(k);
     impl_->tree->findNeighbors(nearest, query, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0.0f));

@@ -1,8 +1,11 @@
 // Whole-file reads, and writes that appear complete or not at all.
 //
-// Output goes to `PATH.tmp.<pid>` in the same folder (same file system, so
-// the final rename is atomic); the temporary file is removed on any failure,
-// so a failed write never leaves a partial file nor touches an existing one.
+// Output is produced in memory, then written to a new file `PATH.tmp.XXXXXX`
+// created exclusively with a random name in the same folder (same file
+// system, so the final rename is atomic), synced, and renamed over PATH.
+// Only that file is ever removed on failure: a failed write never leaves a
+// partial file, never follows a planted symlink, and never touches an
+// existing file.
 // Shared by savePly and the `drm` tool's .drm output. C++14-clean.
 #ifndef DRM_VCG_FILE_IO_H
 #define DRM_VCG_FILE_IO_H
