@@ -3,8 +3,8 @@
 #include "cli.h"
 #include "commands.h"
 #include "mesh_input.h"
+#include "ranked_mesh.h"
 
-#include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
 #include <drm_vcg/rank_palette.h>
 
@@ -32,45 +32,16 @@ int runRanks(const std::vector<std::string>& args) {
     const std::string& input = parsed.positional[0];
     const std::string& output = parsed.positional[1];
 
-    drm::Mesh mesh;
-    std::vector<uint32_t> faceRank;
-    std::vector<std::string> notes;
     ProgressBar bar("ranks");
-    if (hasExtension(input, ".drm")) {
-        // A .drm file's own ranks: the decoder reports the code of every face.
-        std::vector<std::string> encodeOptions = encodeOptionNames();
-        encodeOptions.insert(encodeOptions.end(), encodeFlagNames().begin(), encodeFlagNames().end());
-        for (const std::string& option : encodeOptions)
-            if (parsed.has(option))
-                throw UsageError(option + " cannot be given with a .drm input: its own options are used");
-        const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
-        drm::Decoded decoded;
-        try {
-            decoded = drm::decode(bytes, bar.callback());
-        } catch (const drm::Error& e) {
-            throw drm::Error("cannot decode " + input + ": " + e.what());
-        }
-        mesh = std::move(decoded.mesh);
-        faceRank = std::move(decoded.faceRank);
-    } else {
-        drm::EncodeOptions options = encodeOptionsFrom(parsed);
-        drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
-        mesh = std::move(loaded.mesh);
-        notes = std::move(loaded.notes);
-        options.progress = bar.callback();
-        try {
-            faceRank = drm::encode(mesh, options).faceRank;
-        } catch (const drm::Error& e) {
-            throw drm::Error("cannot encode " + input + ": " + e.what());
-        }
-    }
+    RankedMesh ranked = loadRankedMesh(input, parsed, bar);
+    const drm::Mesh& mesh = ranked.mesh;
     bar.clear();
 
     drm::vcgio::FaceAttributes attributes;
     attributes.rgb.reserve(3 * mesh.faceCount());
     attributes.quality.reserve(mesh.faceCount());
     std::vector<uint64_t> facesPerBucket(drm::vcgio::kRankBucketCount, 0);
-    for (uint32_t rank : faceRank) {
+    for (uint32_t rank : ranked.faceRank) {
         const drm::vcgio::RankColour colour = drm::vcgio::rankColour(rank);
         attributes.rgb.insert(attributes.rgb.end(), {colour.r, colour.g, colour.b});
         attributes.quality.push_back(float(rank));
@@ -78,7 +49,7 @@ int runRanks(const std::vector<std::string>& args) {
     }
     drm::vcgio::savePly(output, mesh, &attributes);
 
-    printNotes(notes);
+    printNotes(ranked.notes);
     std::printf("%s -> %s: %zu faces coloured by the rank that created them\n", input.c_str(), output.c_str(),
                 mesh.faceCount());
     for (int bucket = 0; bucket < drm::vcgio::kRankBucketCount; ++bucket) {

@@ -22,6 +22,7 @@ int runDecode(const std::vector<std::string>& args);
 int runInfo(const std::vector<std::string>& args);
 int runVerify(const std::vector<std::string>& args);
 int runRanks(const std::vector<std::string>& args);
+int runRender(const std::vector<std::string>& args);
 int runBench(const std::vector<std::string>& args);
 
 extern const char* const kEncodeHelp;
@@ -29,6 +30,7 @@ extern const char* const kDecodeHelp;
 extern const char* const kInfoHelp;
 extern const char* const kVerifyHelp;
 extern const char* const kRanksHelp;
+extern const char* const kRenderHelp;
 extern const char* const kBenchHelp;
 
 }  // namespace cli

@@ -1,4 +1,4 @@
-// `drm`: encode, decode, inspect, verify and benchmark .drm files.
+// `drm`: encode, decode, inspect, verify, picture and benchmark .drm files.
 //
 // Exit codes: 0 success, 1 failure, 2 usage error. A failure prints exactly
 // one line on stderr, starting "drm: error: ".
@@ -23,6 +23,7 @@ const Command kCommands[] = {
     {"info", "show what a .drm file holds (sizes, bits per vertex, ranks)", drm::cli::kInfoHelp, drm::cli::runInfo},
     {"verify", "encode and decode a mesh in memory and check it is lossless", drm::cli::kVerifyHelp, drm::cli::runVerify},
     {"ranks", "write a mesh with faces coloured by their distance rank", drm::cli::kRanksHelp, drm::cli::runRanks},
+    {"render", "draw a mesh or .drm file into a PNG picture, optionally coloured by rank", drm::cli::kRenderHelp, drm::cli::runRender},
     {"bench", "compress many meshes and tabulate rates and times", drm::cli::kBenchHelp, drm::cli::runBench},
 };
 
@@ -69,7 +70,7 @@ int dispatch(const std::vector<std::string>& args) {
         }
         const Command* command = findCommand(args[1]);
         if (!command || args.size() > 2)
-            throw drm::cli::UsageError("no help for '" + args[1] + "' (commands: encode, decode, info, verify, ranks, bench)");
+            throw drm::cli::UsageError("no help for '" + args[1] + "' (commands: encode, decode, info, verify, ranks, render, bench)");
         std::fputs(command->help, stdout);
         return 0;
     }

@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
-# Runs one case of the `drm` command-line tests: cli_test.sh DRM DATA_DIR CASE
+# Runs one case of the `drm` command-line tests:
+#   cli_test.sh DRM DATA_DIR CASE [PNG_PROBE]
+# PNG_PROBE (drm-png-probe, see png_probe.cpp) reads back `drm render`'s
+# pictures; the render cases need it.
 #
 # Every failure case checks what a user relies on: exit code 1 (2 for usage
 # errors), no crash (code < 128), exactly one stderr line starting
@@ -8,6 +11,7 @@ set -uo pipefail
 drm=$1
 data=$2
 case_name=$3
+probe=${4:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
@@ -22,6 +26,28 @@ run() {
     local code=$?
     [ "$code" -lt 128 ] || fail "drm $* crashed (exit $code): $(cat err.txt)"
     [ "$code" -eq "$expected" ] || fail "drm $* exited $code, expected $expected; stderr: $(cat err.txt)"
+}
+
+# probe PNG [ARGS...]: drm-png-probe's facts about PNG, in probe.txt.
+probe() {
+    [ -n "$probe" ] || fail "no drm-png-probe given (4th argument)"
+    "$probe" "$@" >probe.txt 2>&1 || fail "drm-png-probe $*: $(cat probe.txt)"
+}
+# fact NAME: the value(s) probe.txt gives for NAME.
+fact() { sed -n "s/^$1 //p" probe.txt; }
+
+# expect_png FILE W H: FILE is a PNG picture of W x H pixels.
+expect_png() {
+    [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || fail "$1 is not a PNG file"
+    probe "$1"
+    [ "$(fact size)" = "$2 $3" ] || fail "$1 is $(fact size), expected $2 $3"
+}
+
+# palette_colour NAME: the hex colour `drm ranks` lists for a bucket of the
+# rank palette ("rank 1", ...), so the tests follow rank_palette.h.
+palette_colour() {
+    "$drm" ranks "$data/torus.ply" palette.ply >palette.txt 2>&1 || fail "ranks for the palette: $(cat palette.txt)"
+    sed -n "s/^  $1  *#\([0-9a-f]\{6\}\) .*/\1/p" palette.txt
 }
 
 # expect_error CODE OUTPUT ARGS...: drm fails with CODE, one error line, and
@@ -44,7 +70,7 @@ help_and_version)
     grep -qE '^drm [0-9]+\.[0-9]+\.[0-9]+$' out.txt || fail "--version printed: $(cat out.txt)"
     run 0 --help
     cp out.txt overview.txt
-    for command in encode decode info verify ranks bench; do
+    for command in encode decode info verify ranks render bench; do
         grep -q "^  $command " overview.txt || fail "--help does not list $command"
         run 0 help "$command"
         grep -q "^usage: drm $command" out.txt || fail "help $command: $(head -1 out.txt)"
@@ -190,6 +216,93 @@ existing_output_kept)
     printf 'not a drm file' >bad.drm
     expect_error 1 - decode bad.drm out.ply
     [ "$(cat out.ply)" = precious ] || fail "a failed decode changed the existing output"
+    ;;
+render)
+    # A closed mesh, grey: the requested size, no cracks between triangles
+    # (the title's letters are above row 40), and no rank colour anywhere.
+    # A few "cracks" are background pixels in thin wedges of the silhouette;
+    # a fill rule that drops pixel centres on shared edges leaves hundreds
+    # on this torus, whose vertices fall on pixel centres.
+    run 0 render "$data/torus.ply" torus.png
+    grep -q 'torus.png: 800x600, front view$' out.txt || fail "render printed: $(cat out.txt)"
+    expect_png torus.png 800 600
+    green=$(palette_colour "rank 2")
+    [ -n "$green" ] || fail "no rank 2 colour in: $(cat palette.txt)"
+    probe torus.png --skip-top 40 "$green"
+    [ "$(fact cracks)" -lt 10 ] || fail "torus.png has $(fact cracks) one-pixel cracks"
+    [ "$(fact "$green")" = 0 ] || fail "a grey render has rank-2 green pixels"
+    for view in back left right top bottom iso; do
+        run 0 render "$data/torus.ply" "torus-$view.png" --view "$view" --size 400x300
+        expect_png "torus-$view.png" 400 300
+        probe "torus-$view.png" --skip-top 40
+        [ "$(fact cracks)" -lt 10 ] || fail "torus-$view.png has $(fact cracks) one-pixel cracks"
+    done
+    # An open mesh (back faces show through its holes) and one the codec
+    # refuses: without --by-rank nothing is encoded, so both render.
+    run 0 render "$data/elephant-with-holes.ply" elephant.png --view iso --size 400x300
+    expect_png elephant.png 400 300
+    run 0 render "$data/bad/fin.off" fin.png
+    expect_png fin.png 800 600
+    ;;
+render_by_rank)
+    # The legend's swatches hold the palette's exact colours, unshaded
+    # (at 800x600 a swatch is 15x15 pixels).
+    run 0 render "$data/fandisk.ply" fandisk.png --by-rank --view iso
+    grep -q '^  rank 1 ' out.txt || fail "render --by-rank printed: $(cat out.txt)"
+    expect_png fandisk.png 800 600
+    for bucket in "rank 1" "rank 2" "rank 3" "rank 4+" "start triangle"; do
+        colour=$(palette_colour "$bucket")
+        [ -n "$colour" ] || fail "no colour for $bucket in: $(cat palette.txt)"
+        probe fandisk.png "$colour"
+        [ "$(fact "$colour")" -ge 200 ] || fail "fandisk.png has $(fact "$colour") pixels of $bucket's #$colour"
+    done
+    run 0 render "$data/nefertiti.ply" n.png --by-rank --bits 10 --predictor parallelogram --size 1024x768
+    expect_png n.png 1024 768
+    ;;
+render_drm)
+    run 0 encode "$data/fandisk.ply" fandisk.drm
+    run 0 render fandisk.drm grey.png --view right
+    expect_png grey.png 800 600
+    run 0 render fandisk.drm ranked.png --by-rank --size 640x480
+    expect_png ranked.png 640 480
+    colour=$(palette_colour "rank 2")
+    probe ranked.png "$colour"
+    [ "$(fact "$colour")" -ge 100 ] || fail "ranked.png has $(fact "$colour") pixels of rank 2's #$colour"
+    expect_error 2 x.png render fandisk.drm x.png --by-rank --bits 10
+    ;;
+render_usage_errors)
+    expect_error 2 - render "$data/torus.ply"
+    expect_error 2 out.jpg render "$data/torus.ply" out.jpg
+    expect_error 2 out.png render "$data/torus.ply" out.png --view sideways
+    for size in 10x10 800 800x 800x600x2 -800x600 800x99999 wide; do
+        expect_error 2 out.png render "$data/torus.ply" out.png --size "$size"
+    done
+    expect_error 2 out.png render "$data/torus.ply" out.png --bits 10
+    expect_error 2 out.png render "$data/torus.ply" out.png --by-rank --bits twelve
+    expect_error 2 out.png render "$data/torus.ply" out.png --frobnicate
+    ;;
+render_failures)
+    expect_error 1 out.png render no-such-mesh.ply out.png
+    expect_error 1 out.png render no-such-file.drm out.png --by-rank
+    : >empty.ply
+    head -c 4096 /dev/zero >zeros.drm
+    expect_error 1 out.png render empty.ply out.png
+    expect_error 1 out.png render zeros.drm out.png
+    run 0 encode "$data/fandisk.ply" whole.drm
+    head -c $(($(wc -c <whole.drm) / 2)) whole.drm >half.drm
+    expect_error 1 out.png render half.drm out.png
+    expect_error 1 out.png render half.drm out.png --by-rank
+    expect_error 1 out.png render "$data/bad/fin.off" out.png --by-rank
+    grep -q 'non-manifold edge' err.txt || fail "fin --by-rank: $(cat err.txt)"
+    expect_error 1 out.png render "$data/bad/nan.ply" out.png
+    expect_error 1 out.png render "$data/bad/bad-index.off" out.png
+    expect_error 1 - render "$data/torus.ply" no-such-dir/out.png
+    # A failed render leaves an existing picture as it was.
+    printf 'precious' >out.png
+    expect_error 1 - render "$data/bad/fin.off" out.png --by-rank
+    [ "$(cat out.png)" = precious ] || fail "a failed render changed the existing output"
+    expect_error 1 - render half.drm out.png
+    [ "$(cat out.png)" = precious ] || fail "a failed render changed the existing output"
     ;;
 *)
     fail "unknown case"

@@ -85,7 +85,9 @@ def main():
       "is left out); totals are whole files. Times are codec calls only, one run each: the machine is "
       "noisy, so compare ratios within a table, not across runs.")
     w("")
-    w("Reproduce: `bash scripts/build.sh && python3 tools/bench/make_results.py`.")
+    w("Reproduce: `bash scripts/build.sh && python3 tools/bench/make_results.py`. "
+      "The comparison with Draco, meshoptimizer and OpenCTM, measured in one run, is in `docs/peers.md` "
+      "(`build/bin/drm-peer-bench`).")
     w("")
 
     w("## The paper's eight models: connectivity")

@@ -1,0 +1,52 @@
+// Ranks of a mesh or of a .drm file (see ranked_mesh.h).
+#include "ranked_mesh.h"
+
+#include "mesh_input.h"
+
+#include <drm_vcg/file_io.h>
+
+namespace drm {
+namespace cli {
+
+RankedMesh decodeRankedMesh(const std::string& input, ProgressBar& bar) {
+    const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
+    drm::Decoded decoded;
+    try {
+        decoded = drm::decode(bytes, bar.callback());
+    } catch (const drm::Error& e) {
+        throw drm::Error("cannot decode " + input + ": " + e.what());
+    }
+    RankedMesh ranked;
+    ranked.mesh = std::move(decoded.mesh);
+    ranked.faceRank = std::move(decoded.faceRank);  // the decoder reports the code of every face
+    ranked.stats = std::move(decoded.stats);
+    return ranked;
+}
+
+RankedMesh loadRankedMesh(const std::string& input, const Arguments& parsed, ProgressBar& bar) {
+    if (hasExtension(input, ".drm")) {
+        std::vector<std::string> encodeOptions = encodeOptionNames();
+        encodeOptions.insert(encodeOptions.end(), encodeFlagNames().begin(), encodeFlagNames().end());
+        for (const std::string& option : encodeOptions)
+            if (parsed.has(option))
+                throw UsageError(option + " cannot be given with a .drm input: its own options are used");
+        return decodeRankedMesh(input, bar);
+    }
+    drm::EncodeOptions options = encodeOptionsFrom(parsed);
+    drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
+    RankedMesh ranked;
+    ranked.mesh = std::move(loaded.mesh);
+    ranked.notes = std::move(loaded.notes);
+    options.progress = bar.callback();
+    try {
+        drm::Encoded encoded = drm::encode(ranked.mesh, options);
+        ranked.faceRank = std::move(encoded.faceRank);
+        ranked.stats = std::move(encoded.stats);
+    } catch (const drm::Error& e) {
+        throw drm::Error("cannot encode " + input + ": " + e.what());
+    }
+    return ranked;
+}
+
+}  // namespace cli
+}  // namespace drm
