@@ -5,7 +5,7 @@
 # OUTDIR/NAME.drm through MeshLab (meshlabserver with drm's io plugin, the
 # plugin's default options: 12 bits, auto predictor). Prints a line per file
 # and a summary; stops at the first file that cannot be compressed (for
-# example a non-manifold mesh), saying why. Existing files in OUTDIR are
+# example a NaN coordinate), saying why. Existing files in OUTDIR are
 # replaced only by complete new ones.
 batch_name=batch-compress
 # shellcheck source=resources/batch-common.sh

@@ -133,6 +133,11 @@ const std::vector<Column>& columns() {
         {"total bpv", "total_bpv", true},
         {"enc s", "encode_s", true},
         {"dec s", "decode_s", true},
+        {"copies", "vertex_copies", true},
+        {"turned", "turned_faces", true},
+        {"repeated", "repeated_faces", true},
+        {"loose", "loose_faces", true},
+        {"repair B", "repair_bytes", true},
         {"lossless", "lossless", false},
     };
     return list;
@@ -156,6 +161,11 @@ std::vector<std::string> cellsOf(const BenchRow& row) {
             rate(s.totalBitsPerVertex(), 3),
             rate(row.encodeSeconds, 3),
             rate(row.decodeSeconds, 3),
+            count(s.splitVertices),
+            count(s.flippedFaces),
+            count(s.repeatedFaces),
+            count(s.looseFaces),
+            count(s.repairBytes),
             row.status};
 }
 

@@ -50,6 +50,8 @@ int runEncode(const std::vector<std::string>& args) {
     }
     drm::vcgio::writeFileAtomically(output, encoded.bytes);
     printNotes(loaded.notes);
+    const std::string repairs = repairsOf(encoded.stats);
+    if (!repairs.empty()) printNote(input + ": " + repairs);
     std::printf("%s -> %s: %s\n", input.c_str(), output.c_str(), summaryOf(encoded.stats).c_str());
     return 0;
 }

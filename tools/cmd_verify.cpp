@@ -45,6 +45,8 @@ int runVerify(const std::vector<std::string>& args) {
     const std::string mismatch = findLosslessMismatch(loaded.mesh, encoded, decoded);
     if (!mismatch.empty()) throw drm::Error(input + " does not survive encoding losslessly: " + mismatch);
     printNotes(loaded.notes);
+    const std::string repairs = repairsOf(encoded.stats);
+    if (!repairs.empty()) printNote(input + ": " + repairs);
     std::printf("%s: %s: lossless\n", input.c_str(), summaryOf(encoded.stats).c_str());
     return 0;
 }

@@ -3,16 +3,20 @@
 
 #include "cli.h"
 
-#include <drm_vcg/manifold.h>
-
 namespace drm {
 namespace cli {
 
 drm::vcgio::LoadedMesh loadMeshForEncoding(const std::string& path) {
     drm::vcgio::LoadedMesh loaded = drm::vcgio::loadMesh(path);
-    const drm::vcgio::ManifoldReport report = drm::vcgio::checkManifold(loaded.mesh);
-    if (!report.ok()) throw drm::Error("cannot encode " + path + ": " + report.summary());
+    if (loaded.mesh.vertexCount() == 0) throw drm::Error("cannot encode " + path + ": the mesh has no vertices");
     return loaded;
+}
+
+std::string repairsOf(const drm::Stats& stats) {
+    const std::string repairs = drm::describeRepairs(stats);
+    if (repairs.empty()) return repairs;
+    return "cut into manifold pieces for the traversal and restored exactly on decoding: " + repairs + ", " +
+           fixed(8.0 * double(stats.repairBytes) / double(stats.vertices), 3) + " bits per vertex";
 }
 
 void printNotes(const std::vector<std::string>& notes) {

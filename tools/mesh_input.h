@@ -11,10 +11,13 @@
 namespace drm {
 namespace cli {
 
-// loadMesh, then the manifold check: a mesh the codec would refuse is
-// refused here with every problem counted, e.g. "cannot encode a.ply:
-// 2 non-manifold edges; first: edge (3, 7) is shared by 3 faces (...)".
+// loadMesh; a file without vertices is refused here, naming the file.
+// Non-manifold meshes are the codec's business (it cuts and restores them).
 drm::vcgio::LoadedMesh loadMeshForEncoding(const std::string& path);
+
+// "" for a mesh that needed no repair, otherwise a sentence counting the
+// vertex copies, turned faces and faces repeating a vertex, and their cost.
+std::string repairsOf(const drm::Stats& stats);
 
 void printNotes(const std::vector<std::string>& notes);
 

@@ -77,4 +77,18 @@ double Stats::connectivityBitsPerVertex() const { return perVertex(connectivityB
 double Stats::geometryBitsPerVertex() const { return perVertex(geometryBytes, vertices); }
 double Stats::totalBitsPerVertex() const { return perVertex(totalBytes, vertices); }
 
+std::string describeRepairs(const Stats& stats) {
+    std::string out;
+    auto add = [&out](uint64_t count, const char* one, const char* many) {
+        if (count == 0) return;
+        out += (out.empty() ? "" : ", ") + std::to_string(count) + " " + (count == 1 ? one : many);
+    };
+    add(stats.splitVertices, "vertex copy", "vertex copies");
+    add(stats.flippedFaces, "face turned over", "faces turned over");
+    add(stats.repeatedFaces, "face repeating another", "faces repeating others");
+    add(stats.looseFaces, "face repeating a vertex", "faces repeating a vertex");
+    if (out.empty()) return out;
+    return out + " (" + std::to_string(stats.repairBytes) + " bytes)";
+}
+
 }  // namespace drm

@@ -1,6 +1,7 @@
 // Decoder (paper, Table 2): read the vertex set, then replay the traversal,
 // turning each rank back into the vertex that closes the triangle.
 #include <algorithm>
+#include <memory>
 #include <string>
 
 #include "file_format.h"
@@ -10,6 +11,7 @@
 #include "progress.h"
 #include "quantize.h"
 #include "rank_coder.h"
+#include "repair_section.h"
 #include "traversal.h"
 #include "vertex_order.h"
 #include "vertex_index.h"
@@ -30,14 +32,28 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
                            : decodeGeometryTree(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits);
 
     const size_t vertexCount = size_t(header.vertexCount);
-    const size_t faceCount = size_t(header.faceCount);
+    // A mesh that was cut into manifold pieces: the traversal also sees the
+    // vertex copies, and the faces repeating a vertex are not in it.
+    std::unique_ptr<RepairReader> repairs;
+    std::vector<uint32_t> noCopies;
+    if (header.hasRepairs) {
+        repairs.reset(new RepairReader(parts.repairs, parts.repairsSize, header.vertexCount, header.copyCount,
+                                       header.faceCount));
+        for (uint32_t original : repairs->repairs().copyOf)
+            for (int k = 0; k < 3; ++k) result.quantized.push_back(result.quantized[3 * size_t(original) + k]);
+    }
+    const std::vector<uint32_t>& copyOf = repairs ? repairs->repairs().copyOf : noCopies;
+    const size_t looseCount = repairs ? repairs->repairs().looseCount() : 0;
+    const size_t duplicateCount = repairs ? repairs->duplicateCount() : 0;
+    const size_t faceCount = size_t(header.faceCount) - looseCount - duplicateCount;  // the traversal's faces
+    const size_t traversalVertices = vertexCount + copyOf.size();
     // The face count is only a claim until the ranks deliver the faces: the
     // tables start small and grow as faces are decoded.
     const size_t expectedFaces = std::min<size_t>(faceCount, size_t(1) << 16);
     VertexIndex candidates(result.quantized);
-    Traversal traversal(vertexCount, expectedFaces, &candidates);
+    Traversal traversal(traversalVertices, expectedFaces, &candidates);
     EdgeModel model(result.quantized, header.grid.bits, header.predictor, header.curvature, header.levers,
-                    header.faceCount, candidates, traversal);
+                    faceCount, candidates, traversal);
     RankDecoder coder(parts.connectivity, parts.connectivitySize, model.contextCount());
     Stats& stats = result.stats;
 
@@ -59,7 +75,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
             if (coder.bytesPastEnd() > 0)
                 throw Error("corrupt file: the connectivity section ends before the last face");
             if (rank >= stats.rankHistogram.size()) {
-                if (rank > vertexCount) throw Error("corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
+                if (rank > traversalVertices) throw Error("corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
                 stats.rankHistogram.resize(size_t(rank) + 1, 0);
             }
             ++stats.rankHistogram[rank];
@@ -86,6 +102,29 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
                     std::to_string(faceCount));
 
     result.mesh.triangles = traversal.triangles();
+    if (repairs) {
+        // Undo the cut: copies back to their originals, turned faces back
+        // over, then the repeated faces and the faces that repeat a vertex.
+        repairs->readAfterTraversal(faceCount);
+        const Repairs& r = repairs->repairs();
+        std::vector<uint32_t>& t = result.mesh.triangles;
+        for (uint32_t& v : t)
+            if (v >= vertexCount) v = copyOf[v - vertexCount];
+        for (size_t f = 0; f < faceCount; ++f)
+            if (r.flipped[f]) std::swap(t[3 * f + 1], t[3 * f + 2]);
+        t.reserve(3 * size_t(header.faceCount));
+        for (size_t i = 0; i < duplicateCount; ++i) {
+            const size_t f = r.duplicateOf[i];
+            const uint32_t a = t[3 * f], b = t[3 * f + 1], c = t[3 * f + 2];
+            if (r.duplicateReversed[i]) t.insert(t.end(), {a, c, b});
+            else t.insert(t.end(), {a, b, c});
+        }
+        t.insert(t.end(), r.looseTriangles.begin(), r.looseTriangles.end());
+        stats.flippedFaces = uint64_t(std::count(r.flipped.begin(), r.flipped.end(), 1));
+        stats.repeatedFaces = duplicateCount;
+        result.faceRank.resize(t.size() / 3, 0);
+        result.quantized.resize(3 * vertexCount);
+    }
     if (header.keepsVertexOrder) {
         // Back to the input numbering: decoded vertex d was input vertex order[d].
         const std::vector<uint32_t> order = decodeVertexOrder(parts.vertexOrder, parts.vertexOrderSize, vertexCount);
@@ -100,7 +139,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
         result.mesh.positions[i] = float(header.grid.origin[i % 3] + double(result.quantized[i]) * header.grid.step);
 
     stats.vertices = vertexCount;
-    stats.faces = faceCount;
+    stats.faces = header.faceCount;
     stats.components = components;
     stats.boundaryEdges = stats.rankHistogram.empty() ? 0 : stats.rankHistogram[0];
     stats.bits = header.grid.bits;
@@ -112,6 +151,9 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     stats.geometryBytes = parts.geometrySize;
     stats.geometry = header.geometryCoder;
     stats.vertexOrderBytes = parts.vertexOrderSize;
+    stats.repairBytes = parts.repairsSize;
+    stats.splitVertices = copyOf.size();
+    stats.looseFaces = looseCount;
     stats.totalBytes = size;
     progress.stage("done", 1.0);
     return result;

@@ -1,17 +1,20 @@
 // Encoder (paper, Table 1): quantize, check, choose the predictor, then walk
 // the shared traversal with the true apex of every open edge and code its
 // distance rank.
+#include <algorithm>
 #include <string>
 
 #include "file_format.h"
 #include "geometry_raw.h"
 #include "geometry_tree.h"
+#include "manifold_cut.h"
 #include "mesh_check.h"
 #include "edge_model.h"
 #include "predictor_selection.h"
 #include "progress.h"
 #include "quantize.h"
 #include "rank_coder.h"
+#include "repair_section.h"
 #include "traversal.h"
 #include "vertex_order.h"
 #include "vertex_index.h"
@@ -33,9 +36,18 @@ struct PreparedMesh {
     std::vector<uint8_t> geometry;    // the geometry section
     std::vector<uint32_t> order;      // decoded index -> input index
     std::vector<int32_t> decodedGrid; // decoded order
-    Mesh renumbered;                  // triangles over decoded indices (no positions)
+    // The traversal's mesh: the input cut into manifold pieces (the input
+    // itself when it needed no repair), over decoded indices; vertices from
+    // order.size() on are copies. No positions, only their count.
+    Mesh renumbered;
     MeshTopology topology;            // of renumbered
     Predictor predictor = Predictor::Midpoint;
+    size_t inputFaces = 0;
+    std::vector<uint32_t> inputFace;  // face of renumbered -> input face
+    // Decoded vertex indices; flipped and duplicateOf per face of renumbered
+    // (encodeOnce puts them in decoded face order).
+    Repairs repairs;
+    bool repaired = false;
 };
 
 Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeOptions& options,
@@ -52,6 +64,8 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
 
     const std::vector<uint32_t>& t = prepared.renumbered.triangles;
     const size_t faceCount = mesh.faceCount();
+    const size_t looseCount = prepared.repairs.looseCount();
+    const size_t duplicateCount = prepared.repairs.duplicateOf.size();
     VertexIndex candidates(grid);
     Traversal traversal(mesh.vertexCount(), faceCount, &candidates);
     EdgeModel model(grid, options.bits, predictor, options.curvature, options.levers, faceCount,
@@ -59,8 +73,10 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     RankEncoder coder(model.contextCount());
 
     FileHeader header;
-    header.vertexCount = mesh.vertexCount();
-    header.faceCount = faceCount;
+    header.vertexCount = prepared.order.size();
+    header.faceCount = faceCount + looseCount + duplicateCount;
+    header.hasRepairs = prepared.repaired;
+    header.copyCount = prepared.repairs.copyOf.size();
     header.grid = result.grid;
     header.predictor = predictor;
     header.geometryCoder = prepared.geometryCoder;
@@ -69,7 +85,9 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     header.levers = options.levers;
     Stats& stats = result.stats;
 
-    result.faceRank.assign(faceCount, 0);
+    result.faceRank.assign(prepared.inputFaces, 0);
+    std::vector<uint32_t> decodedFaceOrder;  // faces of renumbered, as the decoder will see them
+    decodedFaceOrder.reserve(faceCount);
     std::vector<uint8_t> attached(faceCount, 0);
     size_t attachedCount = 0;
     progress.stage("ranking", 0.05);
@@ -79,6 +97,7 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
         // in input order, that no earlier component reached.
         attached[f] = 1;
         ++attachedCount;
+        decodedFaceOrder.push_back(uint32_t(f));
         traversal.startComponent(t[3 * f], t[3 * f + 1], t[3 * f + 2]);
         header.startTriangles.insert(header.startTriangles.end(), {t[3 * f], t[3 * f + 1], t[3 * f + 2]});
         OpenEdge edge;
@@ -97,7 +116,8 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
                 model.resolved(apex);
                 traversal.attachApex(edge, apex);
                 attached[face] = 1;
-                result.faceRank[face] = rank;
+                decodedFaceOrder.push_back(face);
+                result.faceRank[prepared.inputFace[face]] = rank;
                 ++attachedCount;
             }
             coder.put(rank, context);
@@ -112,10 +132,21 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     size_t headerBytes = 0;
     const std::vector<uint8_t> vertexOrder =
         options.keepVertexOrder ? encodeVertexOrder(prepared.order) : std::vector<uint8_t>();
-    result.bytes = writeFile(header, connectivity, prepared.geometry, vertexOrder, &headerBytes);
+    std::vector<uint8_t> repairs;
+    if (prepared.repaired) {
+        Repairs inDecodedOrder = prepared.repairs;
+        std::vector<uint32_t> positionOf(faceCount);
+        for (size_t i = 0; i < faceCount; ++i) {
+            inDecodedOrder.flipped[i] = prepared.repairs.flipped[decodedFaceOrder[i]];
+            positionOf[decodedFaceOrder[i]] = uint32_t(i);
+        }
+        for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
+        repairs = encodeRepairs(inDecodedOrder, header.vertexCount);
+    }
+    result.bytes = writeFile(header, connectivity, prepared.geometry, vertexOrder, repairs, &headerBytes);
 
-    stats.vertices = mesh.vertexCount();
-    stats.faces = faceCount;
+    stats.vertices = header.vertexCount;
+    stats.faces = header.faceCount;
     stats.components = header.startTriangles.size() / 3;
     stats.boundaryEdges = stats.rankHistogram.empty() ? 0 : stats.rankHistogram[0];
     stats.bits = options.bits;
@@ -127,6 +158,11 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     stats.geometryBytes = prepared.geometry.size();
     stats.geometry = prepared.geometryCoder;
     stats.vertexOrderBytes = vertexOrder.size();
+    stats.repairBytes = repairs.size();
+    stats.splitVertices = prepared.repairs.copyOf.size();
+    stats.flippedFaces = size_t(std::count(prepared.repairs.flipped.begin(), prepared.repairs.flipped.end(), 1));
+    stats.looseFaces = looseCount;
+    stats.repeatedFaces = duplicateCount;
     stats.totalBytes = result.bytes.size();
     return result;
 }
@@ -139,7 +175,31 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     prepared.grid = makeGrid(mesh.positions, options.bits);  // checks bits, emptiness, finiteness
     prepared.quantized = quantize(mesh.positions, prepared.grid);
     progress.stage("checking mesh", 0.0);
-    checkMesh(mesh);  // refuses with messages in the input's own indices
+    checkIndices(mesh);  // refuses with messages in the input's own indices
+    // A mesh the traversal can take as it is needs no cut (the common case,
+    // and the cheap test); any other is cut into manifold pieces.
+    ManifoldCut cut;
+    bool needsCut = false;
+    try {
+        checkMesh(mesh);
+    } catch (const Error&) {
+        needsCut = true;
+    }
+    if (needsCut) {
+        progress.stage("cutting into manifold pieces", 0.005);
+        cut = cutIntoManifold(mesh.triangles, mesh.vertexCount());
+    } else {
+        cut.triangles = mesh.triangles;
+        cut.inputFace.resize(mesh.faceCount());
+        for (size_t f = 0; f < cut.inputFace.size(); ++f) cut.inputFace[f] = uint32_t(f);
+        cut.flipped.assign(mesh.faceCount(), 0);
+    }
+    prepared.inputFaces = mesh.faceCount();
+    prepared.repaired = !cut.isIdentity();
+    prepared.inputFace = std::move(cut.inputFace);
+    prepared.repairs.flipped = std::move(cut.flipped);
+    prepared.repairs.duplicateOf = std::move(cut.duplicateOf);
+    prepared.repairs.duplicateReversed = std::move(cut.duplicateReversed);
 
     progress.stage("coding vertices", 0.01);
     if (options.geometry != GeometryCoder::SpanningTree && options.geometry != GeometryCoder::Raw)
@@ -160,16 +220,41 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
         prepared.order.resize(mesh.vertexCount());
         for (size_t v = 0; v < prepared.order.size(); ++v) prepared.order[v] = uint32_t(v);
     }
-    std::vector<uint32_t> decodedIndex(mesh.vertexCount());
-    prepared.decodedGrid.resize(prepared.quantized.size());
+    // Decoded indices: the geometry coder's order, then the copies in the
+    // cut's order (each at its original's position).
+    const size_t copies = cut.copyOf.size();
+    std::vector<uint32_t> decodedIndex(mesh.vertexCount() + copies);
+    prepared.decodedGrid.resize(3 * decodedIndex.size());
     for (size_t d = 0; d < prepared.order.size(); ++d) {
         decodedIndex[prepared.order[d]] = uint32_t(d);
         for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = prepared.quantized[3 * size_t(prepared.order[d]) + k];
     }
-    prepared.renumbered.triangles.resize(mesh.triangles.size());
-    for (size_t c = 0; c < mesh.triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[mesh.triangles[c]];
-    prepared.renumbered.positions.resize(mesh.positions.size());  // only its size matters to the checks
-    prepared.topology = checkMesh(prepared.renumbered);
+    // Copies are numbered in the decoded order of their originals, so the
+    // repairs section can list the originals as small differences.
+    std::vector<uint32_t> copiesByOriginal(copies);
+    for (size_t c = 0; c < copies; ++c) copiesByOriginal[c] = uint32_t(c);
+    std::stable_sort(copiesByOriginal.begin(), copiesByOriginal.end(), [&](uint32_t x, uint32_t y) {
+        return decodedIndex[cut.copyOf[x]] < decodedIndex[cut.copyOf[y]];
+    });
+    prepared.repairs.copyOf.resize(copies);
+    for (size_t r = 0; r < copies; ++r) {
+        const uint32_t c = copiesByOriginal[r], original = cut.copyOf[c];
+        const size_t d = mesh.vertexCount() + r;
+        decodedIndex[mesh.vertexCount() + c] = uint32_t(d);
+        prepared.repairs.copyOf[r] = decodedIndex[original];
+        for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = prepared.quantized[3 * size_t(original) + k];
+    }
+    prepared.repairs.looseTriangles.resize(cut.looseTriangles.size());
+    for (size_t c = 0; c < cut.looseTriangles.size(); ++c)
+        prepared.repairs.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
+    prepared.renumbered.triangles.resize(cut.triangles.size());
+    for (size_t c = 0; c < cut.triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[cut.triangles[c]];
+    prepared.renumbered.positions.resize(prepared.decodedGrid.size());  // only its size matters to the checks
+    try {
+        prepared.topology = checkMesh(prepared.renumbered);
+    } catch (const Error& e) {
+        throw Error(std::string("internal error: the mesh cut into manifold pieces is still not codable: ") + e.what());
+    }
 
     if (options.predictor != Predictor::Auto && options.predictor != Predictor::Parallelogram &&
         options.predictor != Predictor::Midpoint)
@@ -182,7 +267,7 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     Encoded best = encodeOnce(prepared.renumbered, prepared, options, progress);
     const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
                           options.levers.confidenceContext || options.levers.angleOrder;
-    if (options.tryWithoutLevers && anyLever && mesh.faceCount() < kTryWithoutLeversBelowFaces) {
+    if (options.tryWithoutLevers && anyLever && prepared.renumbered.faceCount() < kTryWithoutLeversBelowFaces) {
         EncodeOptions plain = options;
         plain.levers = Levers::none();
         Encoded alternative = encodeOnce(prepared.renumbered, prepared, plain, progress);

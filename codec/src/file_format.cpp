@@ -24,7 +24,8 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     out.u16(uint16_t((h.curvature ? kFlagCurvature : 0) | (h.levers.topologicalFilter ? kFlagTopologicalFilter : 0) |
                      (h.levers.gapClosing ? kFlagGapClosing : 0) |
                      (h.levers.confidenceContext ? kFlagConfidenceContext : 0) |
-                     (h.levers.angleOrder ? kFlagAngleOrder : 0) | (h.keepsVertexOrder ? kFlagVertexOrder : 0)));
+                     (h.levers.angleOrder ? kFlagAngleOrder : 0) | (h.keepsVertexOrder ? kFlagVertexOrder : 0) |
+                     (h.hasRepairs ? kFlagRepairs : 0)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
     out.u8(uint8_t(h.connectivityCoder));
@@ -33,6 +34,7 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     out.f64(h.grid.step);
     out.varint(h.vertexCount);
     out.varint(h.faceCount);
+    if (h.hasRepairs) out.varint(h.copyCount);
     out.varint(h.startTriangles.size() / 3);
     for (uint32_t v : h.startTriangles) out.varint(v);
     return std::move(out.buffer());
@@ -48,6 +50,7 @@ FileHeader decodeHeader(ByteReader& in) {
     h.levers.confidenceContext = (flags & kFlagConfidenceContext) != 0;
     h.levers.angleOrder = (flags & kFlagAngleOrder) != 0;
     h.keepsVertexOrder = (flags & kFlagVertexOrder) != 0;
+    h.hasRepairs = (flags & kFlagRepairs) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
         throw Error("corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");
@@ -77,11 +80,14 @@ FileHeader decodeHeader(ByteReader& in) {
     h.vertexCount = in.count("vertex count", 0xFFFFFFFEull);
     if (h.vertexCount == 0) throw Error("corrupt file: the vertex count is zero");
     h.faceCount = in.count("face count", 0x55555554ull);
+    // A cut makes at most one copy per face corner.
+    if (h.hasRepairs)
+        h.copyCount = in.count("vertex copy count", std::min<uint64_t>(3 * h.faceCount, 0xFFFFFFFEull - h.vertexCount));
     // Every start vertex takes at least one byte: the count is bounded by
     // what is left before anything is allocated.
     const uint64_t components = in.count("component count", std::min<uint64_t>(h.faceCount, in.remaining() / 3));
     h.startTriangles.resize(size_t(components) * 3);
-    for (uint32_t& v : h.startTriangles) v = uint32_t(in.count("start triangle vertex", h.vertexCount - 1));
+    for (uint32_t& v : h.startTriangles) v = uint32_t(in.count("start triangle vertex", h.vertexCount + h.copyCount - 1));
     if (in.remaining() != 0)
         throw Error("corrupt file: " + std::to_string(in.remaining()) + " unexpected bytes at the end of the header");
     return h;
@@ -91,7 +97,7 @@ FileHeader decodeHeader(ByteReader& in) {
 
 std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
                                const std::vector<uint8_t>& geometry, const std::vector<uint8_t>& vertexOrder,
-                               size_t* headerBytes) {
+                               const std::vector<uint8_t>& repairs, size_t* headerBytes) {
     ByteWriter out;
     out.bytes(kSignature, sizeof kSignature);
     out.u16(kFormatVersion);
@@ -99,9 +105,10 @@ std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8
     writeSection(out, connectivity);
     writeSection(out, geometry);
     if (header.keepsVertexOrder) writeSection(out, vertexOrder);
+    if (header.hasRepairs) writeSection(out, repairs);
     if (headerBytes)
         *headerBytes = out.size() - connectivity.size() - geometry.size() -
-                       (header.keepsVertexOrder ? vertexOrder.size() : 0);
+                       (header.keepsVertexOrder ? vertexOrder.size() : 0) - (header.hasRepairs ? repairs.size() : 0);
     return std::move(out.buffer());
 }
 
@@ -117,7 +124,7 @@ FileParts readFile(const uint8_t* data, size_t size) {
                     std::to_string(kFormatVersion));
 
     // Each section: length, CRC-32, payload. The header comes first, and
-    // says whether a fourth (vertex order) section follows the geometry.
+    // says whether the optional sections (vertex order, repairs) follow.
     auto section = [&](const std::string& name, const uint8_t** payload, size_t* payloadSize) {
         *payloadSize = size_t(file.count((name + " section length").c_str(), file.remaining()));
         const uint32_t stored = file.u32((name + " section checksum").c_str());
@@ -136,9 +143,10 @@ FileParts readFile(const uint8_t* data, size_t size) {
     section("connectivity", &parts.connectivity, &parts.connectivitySize);
     section("geometry", &parts.geometry, &parts.geometrySize);
     if (parts.header.keepsVertexOrder) section("vertex order", &parts.vertexOrder, &parts.vertexOrderSize);
+    if (parts.header.hasRepairs) section("repairs", &parts.repairs, &parts.repairsSize);
     if (file.remaining() != 0)
         throw Error("corrupt file: " + std::to_string(file.remaining()) + " unexpected bytes after the last section");
-    parts.headerBytes = size - parts.connectivitySize - parts.geometrySize - parts.vertexOrderSize;
+    parts.headerBytes = size - parts.connectivitySize - parts.geometrySize - parts.vertexOrderSize - parts.repairsSize;
     return parts;
 }
 

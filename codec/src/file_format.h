@@ -1,5 +1,5 @@
 // The .drm container: signature, version, then three sections (header,
-// connectivity, geometry), each with its length and CRC-32. docs/format.md is
+// connectivity, geometry) and up to two optional ones (vertex order, repairs), each with its length and CRC-32. docs/format.md is
 // the byte-level specification; keep the two in step.
 #ifndef DRM_FILE_FORMAT_H
 #define DRM_FILE_FORMAT_H
@@ -22,7 +22,8 @@ constexpr uint16_t kFlagGapClosing = 4;
 constexpr uint16_t kFlagConfidenceContext = 8;
 constexpr uint16_t kFlagAngleOrder = 16;
 constexpr uint16_t kFlagVertexOrder = 32;  // a fourth section holds the input vertex order
-constexpr uint16_t kKnownFlags = 63;
+constexpr uint16_t kFlagRepairs = 64;      // a repairs section undoes a manifold cut (repair_section.h)
+constexpr uint16_t kKnownFlags = 127;
 
 struct FileHeader {
     uint64_t vertexCount = 0;
@@ -34,6 +35,10 @@ struct FileHeader {
     Levers levers;
     ConnectivityCoder connectivityCoder = ConnectivityCoder::RankRangeCoder;
     GeometryCoder geometryCoder = GeometryCoder::SpanningTree;
+    // With repairs: vertices vertexCount .. vertexCount + copyCount - 1 of
+    // the traversal are copies (listed in the repairs section).
+    bool hasRepairs = false;
+    uint64_t copyCount = 0;
     std::vector<uint32_t> startTriangles;  // 3 vertex indices per component
 };
 
@@ -45,13 +50,16 @@ struct FileParts {
     size_t geometrySize = 0;
     const uint8_t* vertexOrder = nullptr;  // when header.keepsVertexOrder
     size_t vertexOrderSize = 0;
+    const uint8_t* repairs = nullptr;  // when header.hasRepairs
+    size_t repairsSize = 0;
     size_t headerBytes = 0;  // everything but the payloads
 };
 
-// vertexOrder is written (as a fourth section) iff header.keepsVertexOrder.
+// vertexOrder is written iff header.keepsVertexOrder, then repairs iff
+// header.hasRepairs.
 std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
                                const std::vector<uint8_t>& geometry, const std::vector<uint8_t>& vertexOrder,
-                               size_t* headerBytes);
+                               const std::vector<uint8_t>& repairs, size_t* headerBytes);
 
 // Checks signature, version, section lengths and checksums, and every header
 // field's range; the payloads are returned as pointers into data.

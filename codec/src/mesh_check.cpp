@@ -34,19 +34,26 @@ uint32_t MeshTopology::apexAcross(uint32_t a, uint32_t b, uint32_t* face) const 
     return HalfEdgeMap::kAbsent;  // unreachable for a table built by checkMesh
 }
 
-MeshTopology checkMesh(const Mesh& mesh) {
+void checkIndices(const Mesh& mesh) {
     const std::vector<uint32_t>& t = mesh.triangles;
     const size_t vertexCount = mesh.vertexCount();
     const size_t faceCount = mesh.faceCount();
     if (t.size() % 3 != 0) throw Error("the triangle array does not hold whole index triples");
     if (vertexCount >= 0xFFFFFFFFu || faceCount >= 0x55555555u)
         throw Error("the mesh is too large: at most 2^32-2 vertices and 1431655764 faces are supported");
-
-    for (size_t f = 0; f < faceCount; ++f) {
+    for (size_t f = 0; f < faceCount; ++f)
         for (int k = 0; k < 3; ++k)
             if (t[3 * f + k] >= vertexCount)
                 throw Error(faceText(t, f) + " refers to vertex " + std::to_string(t[3 * f + k]) +
                             ", but the mesh has only " + std::to_string(vertexCount) + " vertices");
+}
+
+MeshTopology checkMesh(const Mesh& mesh) {
+    checkIndices(mesh);
+    const std::vector<uint32_t>& t = mesh.triangles;
+    const size_t vertexCount = mesh.vertexCount();
+    const size_t faceCount = mesh.faceCount();
+    for (size_t f = 0; f < faceCount; ++f) {
         if (t[3 * f] == t[3 * f + 1] || t[3 * f + 1] == t[3 * f + 2] || t[3 * f] == t[3 * f + 2])
             throw Error(faceText(t, f) + " repeats a vertex index; such degenerate faces are not supported");
     }

@@ -1,4 +1,4 @@
-// Checks that an input mesh is one the method can represent, and builds the
+// Checks that a mesh is one the traversal can code as it is, and builds the
 // directed-edge table the encoder uses to find the true apex across an edge.
 #ifndef DRM_MESH_CHECK_H
 #define DRM_MESH_CHECK_H
@@ -17,6 +17,10 @@ struct MeshTopology {
     // boundary. *face receives that face's index.
     uint32_t apexAcross(uint32_t a, uint32_t b, uint32_t* face) const;
 };
+
+// Throws Error naming the first face with an index out of range, or if the
+// arrays are malformed or too large.
+void checkIndices(const Mesh& mesh);
 
 // Throws Error naming the first offending element if the mesh has an index
 // out of range, a face repeating a vertex, a directed edge used twice (a

@@ -8,14 +8,13 @@
 
 namespace drm_meshlab {
 
-// drm::encode, with a friendlier refusal: when the codec rejects the mesh,
-// the error also counts every non-manifold or misoriented element
-// (drm::vcgio::checkManifold) and names the MeshLab filters that repair
-// them, since the codec itself stops at the first one.
+// drm::encode (any triangle mesh: non-manifold ones are cut and restored
+// by the codec itself).
 drm::Encoded encodeMesh(const drm::Mesh& mesh, const drm::EncodeOptions& options);
 
 // One line: "6475 vertices, 12946 faces, 12 bits, parallelogram predictor:
-// connectivity 0.65 bpv, geometry 12.79 bpv, total 13.44 bpv (10877 bytes)".
+// connectivity 0.65 bpv, geometry 12.79 bpv, total 13.44 bpv (10877 bytes)",
+// and what the codec repaired, if anything.
 std::string statsSummary(const drm::Stats& stats);
 
 // "0.65" (two decimals, no locale).

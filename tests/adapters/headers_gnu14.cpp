@@ -1,7 +1,6 @@
 // Compiled as gnu++14 (see CMakeLists.txt): every public vcg_adapters header
 // must build in the mode MeshLab 2020.09 plugins use.
 #include <drm_vcg/file_io.h>
-#include <drm_vcg/manifold.h>
 #include <drm_vcg/mesh_io.h>
 #include <drm_vcg/rank_palette.h>
 #include <drm_vcg/vcg_mesh.h>

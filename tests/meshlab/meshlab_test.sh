@@ -118,9 +118,13 @@ colorize_bad_parameter)
     echo "colorize_bad_parameter: $(grep -o 'QuantizationBits must.*' server.txt | head -1)"
     ;;
 colorize_non_manifold)
-    server 255 -i "$data/bad/fin.off" -o "$work/out.ply" -m fc -s "$src/resources/colorize-by-rank.mlx"
-    grep -q "cannot rank fin.off: .*edge" server.txt || fail "no message naming the edge: $(tail -5 server.txt)"
-    echo "colorize_non_manifold: $(grep -o 'cannot rank.*' server.txt | head -1 | cut -c1-160)"
+    # Three faces on one edge: the filter ranks the cut mesh, as drm ranks does.
+    server 0 -i "$data/bad/fin.off" -o "$work/fin-ranks.ply" -m fc fq -s "$src/resources/colorize-by-rank.mlx"
+    [ -s fin-ranks.ply ] || fail "fin-ranks.ply was not written: $(tail -5 server.txt)"
+    grep -q "cut and restored exactly: [0-9]* vertex copies" server.txt || fail "no word on the repair: $(tail -5 server.txt)"
+    "$drm" ranks "$data/bad/fin.off" "$work/fin-cli-ranks.ply" >/dev/null 2>&1 || fail "drm ranks fin.off failed"
+    same "$work/fin-ranks.ply" "$work/fin-cli-ranks.ply" --face-colours --face-quality
+    echo "colorize_non_manifold: $(grep -o 'cut and restored.*' server.txt | head -1 | cut -c1-160)"
     ;;
 corrupt_drm)
     "$drm" encode "$data/torus.ply" "$work/good.drm" >/dev/null || fail "drm encode failed"
@@ -143,14 +147,24 @@ corrupt_drm)
     echo "corrupt_drm: flipped byte -> exit $code: $(grep '^drm: error:' server.txt | head -1)"
     ;;
 non_manifold_export)
-    # Refused with a message naming the edge; an existing file is untouched.
+    # A non-manifold mesh saves (byte-identical to drm encode) and opens
+    # again as drm decode gives it.
+    server 0 -i "$data/bad/fin.off" -o "$work/fin-meshlab.drm"
+    [ -s fin-meshlab.drm ] || fail "fin-meshlab.drm was not written: $(tail -5 server.txt)"
+    "$drm" encode "$data/bad/fin.off" "$work/fin-cli.drm" >/dev/null 2>&1 || fail "drm encode fin.off failed"
+    cmp fin-meshlab.drm fin-cli.drm >/dev/null || fail "the plugin's fin.drm differs from drm encode's"
+    server 0 -i "$work/fin-meshlab.drm" -o "$work/fin-meshlab.ply"
+    "$drm" decode "$work/fin-meshlab.drm" "$work/fin-cli.ply" >/dev/null || fail "drm decode fin.drm failed"
+    same "$work/fin-meshlab.ply" "$work/fin-cli.ply"
+    # A mesh no file can hold (a NaN coordinate) is refused with the reason;
+    # an existing file is untouched.
     echo "previous contents" >out.drm
-    server 0 -i "$data/bad/fin.off" -o "$work/out.drm"
+    server 0 -i "$data/bad/nan.ply" -o "$work/out.drm"
     grep -q "has NOT been saved" server.txt || fail "meshlabserver did not report the failed save: $(tail -5 server.txt)"
-    grep -q "^drm: error: cannot save out.drm: .*edge 0->1" server.txt || fail "no message naming the edge: $(tail -5 server.txt)"
+    grep -q "^drm: error: cannot save out.drm: .*finite" server.txt || fail "no message naming the coordinate: $(tail -5 server.txt)"
     [ "$(cat out.drm)" = "previous contents" ] || fail "the existing out.drm was overwritten"
     no_temporary_files "$work"
-    echo "non_manifold_export: $(grep '^drm: error:' server.txt | cut -c1-160)..."
+    echo "non_manifold_export: fin.off saved and reopened as drm does; nan.ply: $(grep '^drm: error:' server.txt | cut -c1-120)..."
     ;;
 batch)
     export MESHLABSERVER="$server"
@@ -167,12 +181,12 @@ batch)
         same "$work/unpacked/$name.ply" "$work/$name-cli.ply"
     done
     # A failing file stops the batch with the reason, exit 1.
-    cp "$data/bad/fin.off" in/
+    cp "$data/bad/nan.ply" in/
     bash "$src/resources/batch-compress.sh" in packed2 >batch.txt 2>&1
     code=$?
-    [ "$code" -eq 1 ] || fail "batch-compress with fin.off exited $code: $(cat batch.txt)"
-    grep -q "^batch-compress: stopped at fin.off: cannot save fin.drm: " batch.txt || fail "unclear stop: $(cat batch.txt)"
-    [ ! -e packed2/fin.drm ] || fail "packed2/fin.drm exists"
+    [ "$code" -eq 1 ] || fail "batch-compress with nan.ply exited $code: $(cat batch.txt)"
+    grep -q "^batch-compress: stopped at nan.ply: cannot save nan.drm: " batch.txt || fail "unclear stop: $(cat batch.txt)"
+    [ ! -e packed2/nan.drm ] || fail "packed2/nan.drm exists"
     leftovers=(packed2/.batch-*)
     [ ${#leftovers[@]} -eq 0 ] || fail "a temporary file was left: ${leftovers[*]}"
     head -c 100 packed/torus.drm >packed/torus.drm.part && mv packed/torus.drm.part packed/broken.drm

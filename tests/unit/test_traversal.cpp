@@ -162,7 +162,7 @@ TEST(Traversal, RejectsAReusedDirectedEdge) {
     EXPECT_THROW(traversal.attachApex(edge, 1), Error);  // (3, 0, 1) would reuse 0->1
 }
 
-TEST(MeshCheck, RefusesWhatTheMethodCannotRepresent) {
+TEST(MeshCheck, RefusesOnlyWhatNoFileCanHold) {
     auto message = [](const Mesh& m) {
         try {
             encode(m);
@@ -178,23 +178,20 @@ TEST(MeshCheck, RefusesWhatTheMethodCannotRepresent) {
     badIndex.triangles[4] = 7;
     EXPECT_NE(message(badIndex).find("refers to vertex 7"), std::string::npos);
 
+    // Meshes the traversal cannot take as they are are cut and repaired,
+    // not refused (tests/adversarial checks that they come back exactly).
     Mesh repeated = tetrahedron();
     repeated.triangles[1] = repeated.triangles[0];
-    EXPECT_NE(message(repeated).find("repeats a vertex"), std::string::npos);
+    EXPECT_EQ(message(repeated), "accepted");
 
     Mesh flipped = tetrahedron();
     std::swap(flipped.triangles[1], flipped.triangles[2]);
-    EXPECT_NE(message(flipped).find("inconsistently oriented"), std::string::npos);
+    EXPECT_EQ(message(flipped), "accepted");
 
     Mesh fin;  // three faces on edge 0-1
     fin.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
     fin.triangles = {0, 1, 2, 1, 0, 3, 0, 1, 4};
-    EXPECT_NE(message(fin).find("non-manifold"), std::string::npos);
-
-    Mesh bowtie;  // two triangles sharing only vertex 0
-    bowtie.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, -1, 0};
-    bowtie.triangles = {0, 1, 2, 0, 3, 4};
-    EXPECT_NE(message(bowtie).find("vertex 0 is non-manifold"), std::string::npos);
+    EXPECT_EQ(message(fin), "accepted");
 
     Mesh nan = tetrahedron();
     nan.positions[5] = std::numeric_limits<float>::quiet_NaN();

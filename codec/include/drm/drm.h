@@ -126,6 +126,17 @@ struct Stats {
     uint64_t geometryBytes = 0;
     uint64_t vertexOrderBytes = 0;  // 0 unless the file keeps the input vertex order
     uint64_t totalBytes = 0;
+    // What it took to code a mesh that is not a manifold, consistently
+    // oriented surface of distinct triangles (all 0 for one that is): the
+    // repairs section's size, the vertex copies that cut non-manifold edges
+    // and vertices apart, the faces coded turned over, the faces over the
+    // same three vertices as an earlier face (coded as a reference to it),
+    // and the faces repeating a vertex index (stored whole).
+    uint64_t repairBytes = 0;
+    uint64_t splitVertices = 0;
+    uint64_t flippedFaces = 0;
+    uint64_t repeatedFaces = 0;
+    uint64_t looseFaces = 0;
     // rankHistogram[r] = number of rank codes equal to r (r = 0: boundary edge).
     std::vector<uint64_t> rankHistogram;
 
@@ -133,6 +144,10 @@ struct Stats {
     double geometryBitsPerVertex() const;
     double totalBitsPerVertex() const;
 };
+
+// "" for a mesh that needed no repair, otherwise e.g. "12 vertex copies,
+// 3 faces turned over, 1 face repeating a vertex (45 bytes)".
+std::string describeRepairs(const Stats& stats);
 
 // Quantization grid: grid coordinate q of axis k stands for
 // origin[k] + q * step. One cubic step over the bounding box:
@@ -154,10 +169,15 @@ struct Encoded {
     // give the input order (identity).
     std::vector<uint32_t> vertexOrder;
     // For each input face, the rank code that created it (>= 1), or 0 for a
-    // component's start triangle, which is stored in the header, not ranked.
+    // component's start triangle, which is stored in the header, not ranked,
+    // and for faces repeating a vertex or another face, which are not ranked.
     std::vector<uint32_t> faceRank;
 };
 
+// Decoded faces come in traversal order, then the faces that repeat an
+// earlier face's vertices, then the faces repeating a vertex index (both in
+// input order); each face keeps its orientation, not necessarily which
+// corner comes first.
 struct Decoded {
     Mesh mesh;                       // dequantized positions, decoded faces
     std::vector<int32_t> quantized;  // grid coordinates, 3 per vertex
@@ -168,10 +188,14 @@ struct Decoded {
     std::vector<uint32_t> faceRank;
 };
 
-// Encodes a mesh. Throws Error when the mesh cannot be represented (empty,
-// NaN or infinite coordinates, index out of range, repeated index in a face,
-// non-manifold edge or vertex, inconsistent orientation), naming the first
-// offending element, or when options are out of range.
+// Encodes a mesh. Any triangle mesh is accepted: non-manifold edges and
+// vertices, inconsistent orientation, non-orientable surfaces, duplicated
+// faces, faces repeating a vertex and coincident vertices are all coded so
+// that decode() gives back the same oriented triangles over the same
+// vertices (Stats counts the repairs). Throws Error, naming the first
+// offending element, when the mesh cannot be represented (no vertices, NaN
+// or infinite coordinates, index out of range) or when options are out of
+// range.
 Encoded encode(const Mesh& mesh, const EncodeOptions& options = EncodeOptions());
 
 // Decodes a .drm buffer. Throws Error naming what is wrong (and where) for

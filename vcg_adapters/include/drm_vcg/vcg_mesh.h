@@ -2,7 +2,7 @@
 //
 // toVcg/fromVcg are templates over the vcg mesh type so that the MeshLab
 // plugin can use them with MeshLab's CMeshO, and the tools with the small
-// VcgMesh below (what the manifold check needs: positions, face-face
+// VcgMesh below (positions, face-face
 // adjacency, flags). C++14-clean: included by MeshLab plugins.
 #ifndef DRM_VCG_VCG_MESH_H
 #define DRM_VCG_VCG_MESH_H

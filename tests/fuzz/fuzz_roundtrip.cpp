@@ -1,0 +1,164 @@
+// libFuzzer target: encode a mesh built from the input bytes, decode the
+// file, and require the decoder to rebuild exactly what the encoder saw.
+//
+// fuzz_decode.cpp checks that no file breaks the decoder; this checks that
+// the decoder reads every file the encoder writes. Encoder and decoder
+// replay the same traversal, predictions and adaptive models, so a step
+// coded one way and read another (as escaped child counts once were: a
+// multi-bit symbol written, single bits read) passes every corrupt-file
+// test and still loses meshes. The inputs lean towards the cases that find
+// such drift: coarse quantization (many vertices on one grid point),
+// holes, several components, isolated vertices, every option.
+//
+// The meshes are often not manifold (holes touching at a vertex, stray
+// faces over any three indices, faces repeating a vertex, doubled and
+// turned-over faces): the encoder must take every one, so an encoder error
+// aborts too, as does any outcome that is not a faithful round trip.
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "drm/drm.h"
+
+namespace {
+
+[[noreturn]] void fail(const std::string& what) {
+    std::fprintf(stderr, "round trip failed: %s\n", what.c_str());
+    std::abort();
+}
+
+drm::EncodeOptions optionsFrom(FuzzedDataProvider& in) {
+    drm::EncodeOptions o;
+    o.bits = in.ConsumeIntegralInRange(1, 21);
+    o.predictor = in.PickValueInArray({drm::Predictor::Auto, drm::Predictor::Parallelogram, drm::Predictor::Midpoint});
+    o.curvature = in.ConsumeBool();
+    o.geometry = in.ConsumeBool() ? drm::GeometryCoder::SpanningTree : drm::GeometryCoder::Raw;
+    o.keepVertexOrder = in.ConsumeBool();
+    o.levers = {in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool()};
+    o.tryWithoutLevers = in.ConsumeBool();
+    return o;
+}
+
+// A grid patch (cells left out make holes), lifted by small integer
+// heights, optionally with tetrahedra and isolated vertices added and the
+// vertices shuffled. scale spreads or squeezes it so that quantization
+// merges many vertices or none.
+drm::Mesh meshFrom(FuzzedDataProvider& in) {
+    drm::Mesh m;
+    const int w = in.ConsumeIntegralInRange(1, 10), h = in.ConsumeIntegralInRange(1, 10);
+    const float scale = float(1 << in.ConsumeIntegralInRange(0, 12)) / 64.0f;
+    for (int j = 0; j <= h; ++j)
+        for (int i = 0; i <= w; ++i) {
+            const float z = float(in.ConsumeIntegralInRange(-3, 3));
+            m.positions.insert(m.positions.end(), {float(i) * scale, float(j) * scale, z * scale / 2});
+        }
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const uint8_t cell = in.remaining_bytes() > 0 ? in.ConsumeIntegral<uint8_t>() : 1;
+            if (cell % 8 == 0) continue;  // a hole
+            const uint32_t a = uint32_t(j * (w + 1) + i), b = a + 1, c = a + uint32_t(w + 1), d = c + 1;
+            if (cell & 0x80) m.triangles.insert(m.triangles.end(), {a, b, d, a, d, c});
+            else m.triangles.insert(m.triangles.end(), {a, b, c, b, d, c});
+        }
+    const int tetrahedra = in.ConsumeIntegralInRange(0, 3);
+    for (int t = 0; t < tetrahedra; ++t) {
+        const uint32_t base = uint32_t(m.vertexCount());
+        const float x = float(in.ConsumeIntegralInRange(-20, 20)) * scale, y = float(in.ConsumeIntegralInRange(-20, 20)) * scale;
+        const float size = float(in.ConsumeIntegralInRange(0, 4)) * scale;  // 0: all four on one point
+        m.positions.insert(m.positions.end(), {x, y, 5, x + size, y, 5, x, y + size, 5, x, y, 5 + size});
+        for (uint32_t f : {0u, 2u, 1u, 0u, 1u, 3u, 0u, 3u, 2u, 1u, 2u, 3u}) m.triangles.push_back(base + f);
+    }
+    // Stray faces over any vertices (fins, bowties, faces repeating a
+    // vertex), doubled faces, and faces turned over.
+    const int stray = in.ConsumeIntegralInRange(0, 4);
+    for (int f = 0; f < stray && m.vertexCount() > 0; ++f)
+        for (int k = 0; k < 3; ++k)
+            m.triangles.push_back(in.ConsumeIntegralInRange<uint32_t>(0, uint32_t(m.vertexCount() - 1)));
+    const int doubled = in.ConsumeIntegralInRange(0, 2);
+    for (int f = 0; f < doubled && !m.triangles.empty(); ++f) {
+        const size_t g = in.ConsumeIntegralInRange<size_t>(0, m.faceCount() - 1);
+        const std::array<uint32_t, 3> t = {m.triangles[3 * g], m.triangles[3 * g + 1], m.triangles[3 * g + 2]};
+        m.triangles.insert(m.triangles.end(), t.begin(), t.end());
+    }
+    const int turned = in.ConsumeIntegralInRange(0, 3);
+    for (int f = 0; f < turned && !m.triangles.empty(); ++f) {
+        const size_t g = in.ConsumeIntegralInRange<size_t>(0, m.faceCount() - 1);
+        std::swap(m.triangles[3 * g + 1], m.triangles[3 * g + 2]);
+    }
+    const int isolated = in.ConsumeIntegralInRange(0, 4);
+    for (int v = 0; v < isolated; ++v)
+        m.positions.insert(m.positions.end(), {float(in.ConsumeIntegralInRange(-8, 8)) * scale, 0.5f * scale, -1});
+    if (in.ConsumeBool()) {
+        // Shuffle the vertices: the raw coder and the tree's roots follow input order.
+        std::vector<uint32_t> newIndex(m.vertexCount());
+        for (uint32_t v = 0; v < newIndex.size(); ++v) newIndex[v] = v;
+        for (size_t v = newIndex.size(); v > 1; --v)
+            std::swap(newIndex[v - 1], newIndex[in.ConsumeIntegralInRange<size_t>(0, v - 1)]);
+        std::vector<float> moved(m.positions.size());
+        for (size_t v = 0; v < newIndex.size(); ++v)
+            for (int k = 0; k < 3; ++k) moved[3 * size_t(newIndex[v]) + size_t(k)] = m.positions[3 * v + size_t(k)];
+        m.positions.swap(moved);
+        for (uint32_t& index : m.triangles) index = newIndex[index];
+    }
+    return m;
+}
+
+// Oriented triangles, each rotated to start at its smallest index, sorted.
+std::vector<std::array<uint32_t, 3>> canonicalFaces(const std::vector<uint32_t>& triangles,
+                                                    const std::vector<uint32_t>& renumber) {
+    std::vector<std::array<uint32_t, 3>> faces;
+    for (size_t f = 0; f + 2 < triangles.size(); f += 3) {
+        std::array<uint32_t, 3> t = {renumber[triangles[f]], renumber[triangles[f + 1]], renumber[triangles[f + 2]]};
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        faces.push_back(t);
+    }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    FuzzedDataProvider in(data, size);
+    const drm::EncodeOptions options = optionsFrom(in);
+    const drm::Mesh mesh = meshFrom(in);
+    drm::Encoded encoded;
+    try {
+        encoded = drm::encode(mesh, options);
+    } catch (const drm::Error& e) {
+        if (mesh.vertexCount() == 0) return 0;  // the one mesh no file holds
+        fail(std::string("the encoder refuses the mesh: ") + e.what());
+    }
+    drm::Decoded decoded;
+    try {
+        decoded = drm::decode(encoded.bytes);
+    } catch (const drm::Error& e) {
+        fail(std::string("the decoder refuses the encoder's file: ") + e.what());
+    }
+    const size_t vertices = mesh.vertexCount();
+    if (decoded.mesh.vertexCount() != vertices || decoded.quantized.size() != 3 * vertices)
+        fail("vertex count " + std::to_string(decoded.mesh.vertexCount()) + ", input " + std::to_string(vertices));
+    if (encoded.vertexOrder.size() != vertices) fail("Encoded::vertexOrder is not a full permutation");
+    // Decoded vertex d is input vertex vertexOrder[d] (identity when the file
+    // keeps the input order) and must sit on that vertex's grid point.
+    std::vector<uint32_t> decodedIndex(vertices);
+    for (size_t d = 0; d < vertices; ++d) {
+        const uint32_t v = encoded.vertexOrder[d];
+        if (v >= vertices) fail("Encoded::vertexOrder holds " + std::to_string(v));
+        decodedIndex[v] = uint32_t(d);
+        for (int k = 0; k < 3; ++k)
+            if (decoded.quantized[3 * d + size_t(k)] != encoded.quantized[3 * size_t(v) + size_t(k)])
+                fail("decoded vertex " + std::to_string(d) + " is not on input vertex " + std::to_string(v) +
+                     "'s grid point");
+    }
+    std::vector<uint32_t> identity(vertices);
+    for (uint32_t v = 0; v < vertices; ++v) identity[v] = v;
+    if (canonicalFaces(mesh.triangles, decodedIndex) != canonicalFaces(decoded.mesh.triangles, identity))
+        fail("the decoded faces are not the input's oriented faces");
+    return 0;
+}

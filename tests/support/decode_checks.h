@@ -1,0 +1,44 @@
+// What every outcome of drm::decode must satisfy, whatever the input: an
+// Error whose message says what kind of failure it is, or a mesh whose
+// indices all name a vertex. The fuzzer and the robustness tests apply the
+// same two checks.
+#ifndef DRM_TEST_DECODE_CHECKS_H
+#define DRM_TEST_DECODE_CHECKS_H
+
+#include <string>
+
+#include "drm/drm.h"
+
+namespace drm_test {
+
+// The words a decoder error message may begin with (drm.h promises a
+// complete sentence; these say which kind).
+inline bool hasKnownErrorPrefix(const std::string& message) {
+    static const char* const kPrefixes[] = {"truncated", "corrupt", "not a .drm", "unsupported",
+                                            "empty",     "rank",    "cancelled"};
+    for (const char* prefix : kPrefixes)
+        if (message.compare(0, std::string(prefix).size(), prefix) == 0) return true;
+    return false;
+}
+
+// "" if the decoded mesh is well formed, else what is wrong with it.
+inline std::string decodedMeshProblem(const drm::Decoded& d) {
+    const drm::Mesh& m = d.mesh;
+    if (m.positions.size() % 3 != 0) return "positions do not hold whole xyz triples";
+    if (m.triangles.size() % 3 != 0) return "triangles do not hold whole index triples";
+    if (d.quantized.size() != m.positions.size()) return "quantized and positions differ in size";
+    const size_t vertices = m.vertexCount();
+    for (size_t i = 0; i < m.triangles.size(); ++i)
+        if (m.triangles[i] >= vertices)
+            return "face " + std::to_string(i / 3) + " refers to vertex " + std::to_string(m.triangles[i]) +
+                   " of " + std::to_string(vertices);
+    if (d.stats.faces != m.faceCount() || d.stats.vertices != vertices) return "stats disagree with the mesh";
+    if (d.faceRank.size() != m.faceCount())
+        return "faceRank has " + std::to_string(d.faceRank.size()) + " entries for " + std::to_string(m.faceCount()) +
+               " faces";
+    return "";
+}
+
+}  // namespace drm_test
+
+#endif  // DRM_TEST_DECODE_CHECKS_H

@@ -1,0 +1,78 @@
+// Encoder option sets that between them produce every header flag, both
+// predictors, both geometry coders, the vertex-order section and the
+// extremes of the quantization range, so files made with them reach every
+// branch of the decoder. Shared by the seed corpus, the robustness tests and
+// the determinism check.
+#ifndef DRM_TEST_OPTION_SETS_H
+#define DRM_TEST_OPTION_SETS_H
+
+#include <string>
+#include <vector>
+
+#include "drm/drm.h"
+
+namespace drm_test {
+
+struct NamedOptions {
+    std::string name;
+    drm::EncodeOptions options;
+};
+
+inline std::vector<NamedOptions> optionSets() {
+    std::vector<NamedOptions> sets;
+    auto add = [&](const std::string& name, auto change) {
+        drm::EncodeOptions o;
+        // Keep the chosen levers: small meshes would otherwise often be
+        // written with none, and their contexts would never be decoded.
+        o.tryWithoutLevers = false;
+        change(o);
+        sets.push_back({name, o});
+    };
+    add("default", [](drm::EncodeOptions&) {});
+    add("bits4", [](drm::EncodeOptions& o) { o.bits = 4; });
+    add("bits21", [](drm::EncodeOptions& o) { o.bits = 21; });
+    add("bits1", [](drm::EncodeOptions& o) { o.bits = 1; });  // many vertices share a grid point
+    add("bits2", [](drm::EncodeOptions& o) { o.bits = 2; });
+    add("bits1-raw", [](drm::EncodeOptions& o) {
+        o.bits = 1;
+        o.geometry = drm::GeometryCoder::Raw;
+    });
+    add("raw", [](drm::EncodeOptions& o) { o.geometry = drm::GeometryCoder::Raw; });
+    add("raw-bits21-parallelogram", [](drm::EncodeOptions& o) {
+        o.geometry = drm::GeometryCoder::Raw;
+        o.bits = 21;
+        o.predictor = drm::Predictor::Parallelogram;
+    });
+    add("parallelogram", [](drm::EncodeOptions& o) { o.predictor = drm::Predictor::Parallelogram; });
+    add("midpoint-curvature", [](drm::EncodeOptions& o) {
+        o.predictor = drm::Predictor::Midpoint;
+        o.curvature = true;
+    });
+    add("no-levers", [](drm::EncodeOptions& o) { o.levers = drm::Levers::none(); });
+    add("filter-only", [](drm::EncodeOptions& o) {
+        o.levers = drm::Levers::none();
+        o.levers.topologicalFilter = true;
+    });
+    add("gap-closing-only", [](drm::EncodeOptions& o) {
+        o.levers = drm::Levers::none();
+        o.levers.gapClosing = true;
+    });
+    add("confidence-only", [](drm::EncodeOptions& o) {
+        o.levers = drm::Levers::none();
+        o.levers.confidenceContext = true;
+    });
+    add("angle-only", [](drm::EncodeOptions& o) {
+        o.levers = drm::Levers::none();
+        o.levers.angleOrder = true;
+    });
+    add("keep-order", [](drm::EncodeOptions& o) { o.keepVertexOrder = true; });
+    add("keep-order-bits12-try-without", [](drm::EncodeOptions& o) {
+        o.keepVertexOrder = true;
+        o.tryWithoutLevers = true;
+    });
+    return sets;
+}
+
+}  // namespace drm_test
+
+#endif  // DRM_TEST_OPTION_SETS_H
