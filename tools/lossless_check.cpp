@@ -12,12 +12,11 @@ namespace {
 
 using Triangle = std::array<uint32_t, 3>;
 
-// The rotation of (a, b, c) starting at its smallest index: the same oriented
-// triangle whichever corner a file lists first.
+// The smallest of the three rotations of (a, b, c): the same oriented
+// triangle whichever corner a file lists first (also for faces such as
+// (a, a, b), where "start at the smallest index" is ambiguous).
 Triangle canonicalRotation(uint32_t a, uint32_t b, uint32_t c) {
-    if (b < a && b < c) return {b, c, a};
-    if (c < a && c < b) return {c, a, b};
-    return {a, b, c};
+    return std::min({Triangle{a, b, c}, Triangle{b, c, a}, Triangle{c, a, b}});
 }
 
 std::string describe(const Triangle& t) {

@@ -38,10 +38,10 @@ std::string testNameOf(const std::string& path) {
 
 using Triangle = std::array<uint32_t, 3>;
 
-// An oriented triangle written from its smallest corner on.
-Triangle rotatedToSmallest(Triangle t) {
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    return t;
+// The smallest rotation of an oriented triangle (well defined also for
+// faces such as (a, a, b)).
+Triangle rotatedToSmallest(const Triangle& t) {
+    return std::min({t, Triangle{t[1], t[2], t[0]}, Triangle{t[2], t[0], t[1]}});
 }
 
 std::multiset<Triangle> orientedTriangles(const std::vector<uint32_t>& corners,

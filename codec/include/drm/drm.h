@@ -130,7 +130,9 @@ struct Stats {
     // oriented surface of distinct triangles (all 0 for one that is): the
     // repairs section's size, the vertex copies that cut non-manifold edges
     // and vertices apart, the faces coded turned over, the faces over the
-    // same three vertices as an earlier face (coded as a reference to it),
+    // same three vertices as an earlier face, coded as a reference to it
+    // (only in a mesh that needs repairs: two faces over the same vertices
+    // in opposite directions and nothing else are a clean closed surface),
     // and the faces repeating a vertex index (stored whole).
     uint64_t repairBytes = 0;
     uint64_t splitVertices = 0;

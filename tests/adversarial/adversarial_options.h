@@ -1,0 +1,52 @@
+// The encoder options every adversarial mesh is tried with: the defaults,
+// the kept vertex order, the raw geometry coder, and coarse grids on which
+// many vertices share a grid point.
+#ifndef DRM_TEST_ADVERSARIAL_OPTIONS_H
+#define DRM_TEST_ADVERSARIAL_OPTIONS_H
+
+#include <drm/drm.h>
+
+#include <string>
+#include <vector>
+
+namespace adversarial {
+
+struct NamedOptions {
+    std::string name;  // a gtest name
+    drm::EncodeOptions options;
+};
+
+inline std::vector<NamedOptions> adversarialOptions() {
+    std::vector<NamedOptions> sets;
+    auto add = [&](const std::string& name, auto change) {
+        drm::EncodeOptions o;
+        change(o);
+        sets.push_back({name, o});
+    };
+    add("default", [](drm::EncodeOptions&) {});
+    add("keep_order", [](drm::EncodeOptions& o) { o.keepVertexOrder = true; });
+    add("raw", [](drm::EncodeOptions& o) { o.geometry = drm::GeometryCoder::Raw; });
+    add("raw_bits4", [](drm::EncodeOptions& o) {
+        o.geometry = drm::GeometryCoder::Raw;
+        o.bits = 4;
+    });
+    add("bits4", [](drm::EncodeOptions& o) { o.bits = 4; });
+    add("bits1_keep_order", [](drm::EncodeOptions& o) {
+        o.bits = 1;
+        o.keepVertexOrder = true;
+    });
+    add("paper_method", [](drm::EncodeOptions& o) {
+        o.levers = drm::Levers::none();
+        o.tryWithoutLevers = false;
+    });
+    return sets;
+}
+
+// drm.h: the raw coder and keepVertexOrder keep the input vertex order.
+inline bool keepsInputOrder(const drm::EncodeOptions& o) {
+    return o.keepVertexOrder || o.geometry == drm::GeometryCoder::Raw;
+}
+
+}  // namespace adversarial
+
+#endif  // DRM_TEST_ADVERSARIAL_OPTIONS_H
