@@ -27,5 +27,5 @@ fuzz() {
 }
 if [ "${DRM_SKIP_FUZZ:-0}" != 1 ]; then
   fuzz decoder -runs=20000
-  fuzz round-trip --roundtrip -runs=3000
+  fuzz round-trip --roundtrip -runs=20000
 fi
