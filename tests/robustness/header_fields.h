@@ -9,6 +9,8 @@
 
 namespace drm_test {
 
+constexpr uint16_t kRepairsFlag = 64;  // flag bit 6: a vertex copy count follows the face count
+
 struct HeaderFields {
     uint16_t flags = 0;
     uint8_t bits = 0;
@@ -19,6 +21,7 @@ struct HeaderFields {
     double step = 0;
     uint64_t vertexCount = 0;
     uint64_t faceCount = 0;
+    uint64_t copyCount = 0;               // present only with kRepairsFlag
     uint64_t componentCount = 0;          // written as is, even if it disagrees with startVertices
     std::vector<uint64_t> startVertices;  // 3 per component
 };

@@ -22,13 +22,16 @@ Sample encoded(const std::string& meshName, const drm::Mesh& mesh, const std::st
 }  // namespace
 
 const std::vector<Sample>& coreSamples() {
-    // A mesh with a hole, several components and an isolated vertex, and a
-    // closed one; default options and the optional fourth section.
+    // A mesh with a hole, several components and an isolated vertex, a
+    // closed one, and one with a repairs section; default options and the
+    // optional vertex order section.
     static const std::vector<Sample> core = [] {
         const drm::Mesh mixed = mixedMesh();
         const drm::Mesh sphere = icosphere(2);
+        const drm::Mesh repaired = meshNeedingRepairs();
         return std::vector<Sample>{encoded("mixed", mixed, "default"), encoded("mixed", mixed, "keep-order"),
-                                   encoded("icosphere", sphere, "default"), encoded("mixed", mixed, "raw")};
+                                   encoded("icosphere", sphere, "default"), encoded("mixed", mixed, "raw"),
+                                   encoded("needs-repairs", repaired, "default")};
     }();
     return core;
 }

@@ -168,10 +168,10 @@ TEST(ChecksummedCorruption, MissingOrExtraVertexOrderSectionIsRefused) {
 }
 
 TEST(ChecksummedCorruption, UnknownHeaderFlagsAreRefused) {
-    // Bits 0-5 are defined (docs/format.md); a new flag must come with a
+    // Bits 0-6 are defined (docs/format.md); a new flag must come with a
     // reader that knows it, so older readers refuse it.
     Verdicts v("unknown header flags");
-    for (int bit = 6; bit < 16; ++bit)
+    for (int bit = 7; bit < 16; ++bit)
         forEachHeader([&](const drm_test::Sample&, HeaderFields& h) { h.flags |= uint16_t(1u << bit); },
                       [&](const Bytes& b, const std::string& label) { v.refused(b, label, "corrupt"); },
                       "flag bit " + std::to_string(bit) + " set");
@@ -179,7 +179,7 @@ TEST(ChecksummedCorruption, UnknownHeaderFlagsAreRefused) {
 
 TEST(ChecksummedCorruption, ToggledKnownFlagsAreRefusedOrSound) {
     Verdicts v("known header flags toggled");
-    for (int bit = 0; bit < 6; ++bit)
+    for (int bit = 0; bit < 7; ++bit)
         forEachHeader([&](const drm_test::Sample&, HeaderFields& h) { h.flags ^= uint16_t(1u << bit); },
                       [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); },
                       "flag bit " + std::to_string(bit) + " toggled");

@@ -162,6 +162,18 @@ drm::Mesh append(const drm::Mesh& a, const drm::Mesh& b, float dx, float dy, flo
     return m;
 }
 
+drm::Mesh meshNeedingRepairs() {
+    drm::Mesh m = icosphere(1);
+    std::vector<uint32_t>& t = m.triangles;
+    std::swap(t[4], t[5]);                    // face 1 turned over
+    t.insert(t.end(), {t[6], t[7], t[8]});    // face 2 doubled
+    const uint32_t a = t[9], b = t[10];       // a fin on face 3's first edge
+    addVertex(m, 0.1f, 0.2f, 2.0f);
+    t.insert(t.end(), {a, b, uint32_t(m.vertexCount() - 1)});
+    t.insert(t.end(), {t[12], t[12], t[13]}); // a face repeating a vertex
+    return m;
+}
+
 drm::Mesh mixedMesh() {
     drm::Mesh m = append(gridPatch(10, true), tetrahedron(), 1.5f, 0.25f, 0.0f);
     addVertex(m, -0.5f, 0.5f, 0.75f);
@@ -188,6 +200,7 @@ std::vector<NamedMesh> smallMeshes() {
     meshes.push_back({"icosphere", icosphere(1)});
     meshes.push_back({"box-ring", boxRing(3)});
     meshes.push_back({"mixed", mixedMesh()});
+    meshes.push_back({"needs-repairs", meshNeedingRepairs()});
     return meshes;
 }
 

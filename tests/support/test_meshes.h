@@ -46,6 +46,11 @@ struct NamedMesh {
 // an isolated vertex (three components plus two isolated vertices).
 drm::Mesh mixedMesh();
 
+// A closed icosphere given every defect the repairs section undoes: a face
+// turned over, a doubled face, a fin (a third face on an edge) and a face
+// repeating a vertex. Its files carry a repairs section.
+drm::Mesh meshNeedingRepairs();
+
 // A handful of small meshes covering the decoder's cases: one triangle, a
 // tetrahedron, several components, isolated vertices, a hole, a closed
 // sphere, genus 1. All under 200 faces.
