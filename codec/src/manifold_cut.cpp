@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 
 #include "drm/drm.h"
+#include "corner_sets.h"
 #include "halfedge_map.h"
 
 namespace drm {
@@ -85,16 +85,6 @@ std::vector<uint8_t> orient(Joins& joins, size_t faceCount) {
     }
     return flip;
 }
-
-struct CornerSets {
-    std::vector<uint32_t> parent;
-    explicit CornerSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    uint32_t root(uint32_t c) {
-        while (parent[c] != c) c = parent[c] = parent[parent[c]];
-        return c;
-    }
-    void join(uint32_t a, uint32_t b) { parent[root(a)] = root(b); }
-};
 
 // Numbers the fans: corners linked by joins share a vertex; the first fan
 // of each vertex (by corner order) keeps its index, the others get copies.

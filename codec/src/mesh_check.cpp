@@ -1,7 +1,8 @@
 #include "mesh_check.h"
 
-#include <numeric>
 #include <string>
+
+#include "corner_sets.h"
 
 namespace drm {
 namespace {
@@ -10,17 +11,6 @@ std::string faceText(const std::vector<uint32_t>& t, size_t f) {
     return "face " + std::to_string(f) + " (" + std::to_string(t[3 * f]) + ", " + std::to_string(t[3 * f + 1]) +
            ", " + std::to_string(t[3 * f + 2]) + ")";
 }
-
-// Union-find over face corners, to count the fans around each vertex.
-struct CornerSets {
-    std::vector<uint32_t> parent;
-    explicit CornerSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    uint32_t root(uint32_t c) {
-        while (parent[c] != c) c = parent[c] = parent[parent[c]];
-        return c;
-    }
-    void join(uint32_t a, uint32_t b) { parent[root(a)] = root(b); }
-};
 
 }  // namespace
 
