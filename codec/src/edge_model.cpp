@@ -67,7 +67,7 @@ EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predi
       fineBuckets_(faceCount >= kFineBucketsFromFaces),
       admissible_(traversal, levers.topologicalFilter),
       predictor_(predictor, curvature, grid, candidates, admissible_),
-      ranks_(grid, bits, candidates, admissible_) {}
+      ranks_(grid, candidates, admissible_) {}
 
 int EdgeModel::contextCount() const { return levers_.confidenceContext ? 2 * kDistanceContexts : 1; }
 
@@ -90,7 +90,8 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     if (levers_.confidenceContext) f.context = confidenceBucket(f.nearest, fineBuckets_);
     if (levers_.angleOrder && f.nearest.size() >= 2) {
         const uint32_t nearestByDistance = f.nearest[0].second;
-        std::vector<RankedVertex> byAngle = f.nearest;
+        std::vector<RankedVertex>& byAngle = byAngle_;
+        byAngle = f.nearest;
         orderByAngle(edge, byAngle);
         if (byAngle[0].second != nearestByDistance) {
             // The two orders disagree on rank 1: follow the one that was

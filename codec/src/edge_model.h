@@ -55,6 +55,7 @@ private:
     ApexPredictor predictor_;
     RankSearch ranks_;
     EdgeForecast forecast_;
+    std::vector<RankedVertex> byAngle_;  // scratch: the nearest in angle order
     // Rank-1 disagreements between distance and angle order: who was right.
     struct Disagreement {
         uint32_t byDistance = kNoPreference, byAngle = kNoPreference;

@@ -44,6 +44,11 @@ inline Vec3 rejectFrom(Vec3 v, Vec3 e) {
 constexpr int kSubUnitBits = 4;
 constexpr int64_t kSubUnits = int64_t(1) << kSubUnitBits;
 
+// A point in those fixed-point units.
+struct FixedPoint {
+    int64_t x = 0, y = 0, z = 0;
+};
+
 }  // namespace drm
 
 #endif  // DRM_EXACT_MATH_H

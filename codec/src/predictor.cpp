@@ -96,14 +96,16 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
         uint32_t first = 0;
         bool found = false;
         for (uint32_t v : nearby_) {
-            if (!usable_(v, edge)) continue;
             const Vec3 x = gridPoint(grid_, v) - mid;
             if (norm2(x) > radius * radius) continue;
             const double h = dot(x, ahead);
             if (h <= 0) continue;
             const double along = dot(x, e) / edgeLength;
             if (along > halfSlab || along < -halfSlab) continue;
-            if (!found || h < firstHeight || (h == firstHeight && v < first)) {
+            // The geometric tests are cheap and reject most vertices; the
+            // admissibility test (edge look-ups) only decides between a
+            // vertex and the best so far.
+            if ((!found || h < firstHeight || (h == firstHeight && v < first)) && usable_(v, edge)) {
                 firstHeight = h;
                 first = v;
                 found = true;

@@ -21,7 +21,7 @@ int64_t snapAxis(double x, int bits) {
     return int64_t(std::floor(clamped * double(kSubUnits) + 0.5));
 }
 
-Vec3 toGridUnits(const FixedPoint& p) {
+Vec3 toGridUnits(const FixedPoint& p) {  // for collectNear, which takes a superset radius
     return {double(p.x) / kSubUnits, double(p.y) / kSubUnits, double(p.z) / kSubUnits};
 }
 
@@ -29,9 +29,9 @@ Vec3 toGridUnits(const FixedPoint& p) {
 
 FixedPoint snapPrediction(Vec3 p, int bits) { return {snapAxis(p.x, bits), snapAxis(p.y, bits), snapAxis(p.z, bits)}; }
 
-RankSearch::RankSearch(const std::vector<int32_t>& grid, int bits, const VertexIndex& candidates,
+RankSearch::RankSearch(const std::vector<int32_t>& grid, const VertexIndex& candidates,
                        const Admissibility& admissible)
-    : grid_(grid), bits_(bits), candidates_(candidates), admissible_(admissible) {}
+    : grid_(grid), index_(candidates), admissible_(admissible) {}
 
 int64_t RankSearch::distance2(const FixedPoint& p, uint32_t v) const {
     const int64_t dx = int64_t(grid_[3 * size_t(v)]) * kSubUnits - p.x;
@@ -43,12 +43,12 @@ int64_t RankSearch::distance2(const FixedPoint& p, uint32_t v) const {
 uint32_t RankSearch::rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred) {
     if (apex == preferred) return 1;
     const int64_t apexDistance = distance2(p, apex);
-    candidates_.collectNear(toGridUnits(p), std::sqrt(double(apexDistance)) / kSubUnits, nearby_);
+    index_.collectNear(toGridUnits(p), std::sqrt(double(apexDistance)) / kSubUnits, nearby_);
     uint32_t closer = preferred == kNoPreference ? 0 : 1;
     for (uint32_t v : nearby_) {
-        if (v == apex || v == preferred || !admissible_(v, edge)) continue;
+        if (v == apex || v == preferred) continue;
         const int64_t d = distance2(p, v);
-        if (d < apexDistance || (d == apexDistance && v < apex)) ++closer;
+        if ((d < apexDistance || (d == apexDistance && v < apex)) && admissible_(v, edge)) ++closer;
     }
     return closer + 1;
 }
@@ -58,9 +58,9 @@ uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const Open
         if (rank == 1) return preferred;
         --rank;
     }
-    if (rank == 0 || rank > candidates_.presentCount())
+    if (rank == 0 || rank > index_.presentCount())
         throw Error("rank " + std::to_string(rank) + " is impossible: only " +
-                    std::to_string(candidates_.presentCount()) + " candidate vertices remain");
+                    std::to_string(index_.presentCount()) + " candidate vertices remain");
     const std::vector<RankedVertex>& order = nearest(p, rank, edge, preferred);
     if (order.size() < rank)
         throw Error("rank " + std::to_string(rank) + " is impossible: only " + std::to_string(order.size()) +
@@ -69,34 +69,87 @@ uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const Open
     return order[rank - 1].second;
 }
 
+// Rings of cells outwards from p's cell, until `count` admissible vertices
+// lie nearer than anything outside the rings can be: they are then the
+// nearest, exactly (ties ordered by index), whatever the cell size.
 const std::vector<RankedVertex>& RankSearch::nearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
                                                      uint32_t skip) {
-    const Vec3 center = toGridUnits(p);
-    // Start with a radius that holds a few more vertices than asked for (the
-    // edge's ends and filtered vertices may be among them) and double it
-    // until enough admissible vertices lie inside; everything within the
-    // radius is then known exactly, so the nearest of them are the answer
-    // whatever radius the float search suggested.
-    double radius = candidates_.radiusHolding(center, std::min(count + 3, candidates_.presentCount()));
-    const double everything = double(int64_t(1) << (bits_ + 3));  // covers the box from any clamped point
-    for (;;) {
-        const bool complete = !(radius < everything);
-        candidates_.collectNear(center, complete ? everything : radius, nearby_);
-        const double limit = radius * double(kSubUnits);
-        const int64_t inside = complete ? std::numeric_limits<int64_t>::max() : int64_t(std::floor(limit * limit));
-        ranked_.clear();
-        for (uint32_t v : nearby_) {
-            if (v == skip || !admissible_(v, edge)) continue;
-            const int64_t d = distance2(p, v);
-            if (d <= inside) ranked_.emplace_back(d, v);
+    ranked_.clear();
+    if (count == 0) return ranked_;
+    if (count > kFewNearest) return manyNearest(p, count, edge, skip);
+    // The few nearest so far, in rank order; once there are `count`, cells
+    // and vertices farther than the last of them are skipped, and the
+    // admissibility test (edge look-ups) is asked only of vertices that
+    // would enter the list.
+    int64_t bound = INT64_MAX;
+    auto visit = [&](const uint32_t* first, size_t n) {
+        for (size_t i = 0; i < n; ++i) {
+            const uint32_t v = first[i];
+            if (v == skip) continue;
+            const RankedVertex c{distance2(p, v), v};
+            if (c.first > bound || (ranked_.size() == count && !(c < ranked_.back()))) continue;
+            if (!admissible_(v, edge)) continue;
+            ranked_.insert(std::upper_bound(ranked_.begin(), ranked_.end(), c), c);
+            if (ranked_.size() > count) ranked_.pop_back();
+            if (ranked_.size() == count) bound = ranked_.back().first;
         }
-        if (ranked_.size() >= count || complete) {
-            const size_t keep = std::min(count, ranked_.size());
-            std::partial_sort(ranked_.begin(), ranked_.begin() + keep, ranked_.end());
-            ranked_.resize(keep);
+    };
+    for (int ring = index_.firstRing(p);; ++ring) {
+        if (!index_.ringIsCheap(ring)) {  // far from everything left: look at everything
+            ranked_.clear();
+            bound = INT64_MAX;
+            nearby_.clear();
+            index_.collectAll(nearby_);
+            visit(nearby_.data(), nearby_.size());
             return ranked_;
         }
-        radius *= 2;
+        index_.forEachCellOfRing(p, ring, bound, visit);
+        if (index_.ringsCoverGrid(p, ring)) return ranked_;
+        if (ranked_.size() == count && index_.clearance2(p, ring) > bound) return ranked_;
+    }
+}
+
+// For long rank lists (a decoder asked for a far rank): everything in the
+// rings, sorted, then admissibility in rank order. Sorting is what costs, so
+// it waits until the rings hold `count` vertices at all, and after a failed
+// attempt until they have doubled.
+const std::vector<RankedVertex>& RankSearch::manyNearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
+                                                         uint32_t skip) {
+    candidates_.clear();
+    auto collect = [&](const uint32_t* first, size_t n) {
+        for (size_t i = 0; i < n; ++i)
+            if (first[i] != skip) candidates_.emplace_back(distance2(p, first[i]), first[i]);
+    };
+    auto settle = [&](int64_t clear) {  // true once `count` admissible vertices are nearer than clear
+        std::sort(candidates_.begin(), candidates_.end());
+        ranked_.clear();
+        for (const RankedVertex& c : candidates_) {
+            if (c.first >= clear) return false;
+            if (admissible_(c.second, edge)) {
+                ranked_.push_back(c);
+                if (ranked_.size() == count) return true;
+            }
+        }
+        return false;
+    };
+    size_t settleFrom = count;
+    for (int ring = index_.firstRing(p);; ++ring) {
+        if (!index_.ringIsCheap(ring)) {
+            candidates_.clear();
+            nearby_.clear();
+            index_.collectAll(nearby_);
+            collect(nearby_.data(), nearby_.size());
+            settle(INT64_MAX);
+            return ranked_;
+        }
+        index_.forEachCellOfRing(p, ring, INT64_MAX, collect);
+        if (index_.ringsCoverGrid(p, ring)) {
+            settle(INT64_MAX);
+            return ranked_;
+        }
+        if (candidates_.size() < settleFrom) continue;
+        if (settle(index_.clearance2(p, ring))) return ranked_;
+        settleFrom = 2 * candidates_.size();
     }
 }
 

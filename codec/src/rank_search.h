@@ -22,10 +22,6 @@ class VertexIndex;
 
 constexpr uint32_t kNoPreference = 0xFFFFFFFFu;
 
-struct FixedPoint {
-    int64_t x = 0, y = 0, z = 0;
-};
-
 // The prediction on the fixed-point grid, clamped well outside the model's
 // box so that squared distances cannot overflow.
 FixedPoint snapPrediction(Vec3 prediction, int bits);
@@ -35,7 +31,7 @@ using RankedVertex = std::pair<int64_t, uint32_t>;
 
 class RankSearch {
 public:
-    RankSearch(const std::vector<int32_t>& grid, int bits, const VertexIndex& candidates,
+    RankSearch(const std::vector<int32_t>& grid, const VertexIndex& candidates,
                const Admissibility& admissible);
 
     // Encoder: the rank of apex (>= 1).
@@ -54,12 +50,16 @@ public:
     int64_t distance2(const FixedPoint& p, uint32_t v) const;
 
 private:
+    static constexpr size_t kFewNearest = 8;  // kept in a sorted list; more are sorted at the end
+    const std::vector<RankedVertex>& manyNearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
+                                                 uint32_t skip);
+
     const std::vector<int32_t>& grid_;
-    int bits_;
-    const VertexIndex& candidates_;
+    const VertexIndex& index_;
     const Admissibility& admissible_;
     std::vector<uint32_t> nearby_;
-    std::vector<RankedVertex> ranked_;
+    std::vector<RankedVertex> candidates_;  // found by the search, any admissibility
+    std::vector<RankedVertex> ranked_;      // the answer
 };
 
 }  // namespace drm

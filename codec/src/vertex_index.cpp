@@ -2,82 +2,219 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-
-#include <flann/flann.hpp>
 
 namespace drm {
 namespace {
 
-// Collects every point FLANN offers within a fixed squared radius.
-class CollectWithin : public flann::ResultSet<float> {
-public:
-    CollectWithin(float radius2, std::vector<uint32_t>& out) : radius2_(radius2), out_(out) {}
-    bool full() const override { return true; }
-    void addPoint(float dist, size_t index) override {
-        if (dist <= radius2_) out_.push_back(uint32_t(index));
+constexpr uint32_t kRemoved = 0xFFFFFFFFu;
+constexpr int kMaxShift = 32;  // one cell spans any int32 range
+
+// Mean vertices per occupied cell the cell size aims at. Around an edge the
+// predictor looks about two edge lengths away and the rank search about
+// one: with cells of two to three vertex spacings both stay within a few
+// dozen cells and vertices (measured: 2 to 8 is flat within 10%).
+constexpr uint64_t kTargetOccupancy = 4;
+// The occupancy is first counted on a coarse grid of at most 64 cells per
+// axis (a 32 KB bitmap); surfaces keep about 4x fewer vertices per cell with
+// each halving of the cell size, which sets the final size.
+constexpr int kSurveyCellsPerAxisBits = 6;
+
+int bitLength(uint64_t m) {
+    int n = 0;
+    for (; m != 0; m >>= 1) ++n;
+    return n;
+}
+
+int64_t floorShift(int64_t v, int s) { return v >= 0 ? v >> s : -((-v - 1) >> s) - 1; }
+
+// The cell size: about kTargetOccupancy vertices per occupied cell, with
+// the table of columns no larger than a few entries per vertex.
+int chooseCellShift(const std::vector<int32_t>& grid, int64_t origin, int64_t span) {
+    const uint64_t n = grid.size() / 3;
+    const int surveyShift = std::max(0, bitLength(uint64_t(span)) - kSurveyCellsPerAxisBits);
+    const int64_t perAxis = (span >> surveyShift) + 1;  // <= 64
+    std::vector<uint64_t> seen(size_t((perAxis * perAxis * perAxis + 63) / 64), 0);
+    uint64_t occupied = 0;
+    for (size_t v = 0; v < n; ++v) {
+        const int64_t x = (grid[3 * v] - origin) >> surveyShift, y = (grid[3 * v + 1] - origin) >> surveyShift,
+                      z = (grid[3 * v + 2] - origin) >> surveyShift;
+        const uint64_t bit = uint64_t((x * perAxis + y) * perAxis + z);
+        if (!(seen[bit / 64] >> (bit % 64) & 1)) {
+            seen[bit / 64] |= uint64_t(1) << (bit % 64);
+            ++occupied;
+        }
     }
-    float worstDist() const override { return radius2_; }
-
-private:
-    float radius2_;
-    std::vector<uint32_t>& out_;
-};
-
-// Float search error: coordinates up to 2^22 in magnitude round to float
-// with at most 0.25 units of error per axis, and the sums of squares carry a
-// few ulps; padding the radius by 2 units and 1e-5 relative covers both.
-double paddedRadius2(double radius) {
-    const double padded = radius + 2.0;
-    return padded * padded * (1.0 + 1e-5);
+    // Estimated occupancy n / cells, kept within [target/2, 2 target):
+    // finer cells while it stays above, coarser while it falls below.
+    int shift = surveyShift;
+    uint64_t cells = occupied;
+    while (shift > 0 && 2 * n >= kTargetOccupancy * cells * 4 && cells * 4 <= n) {
+        cells *= 4;
+        --shift;
+    }
+    while (shift < kMaxShift && 2 * n < kTargetOccupancy * cells && cells > 1) {
+        cells = (cells + 3) / 4;
+        ++shift;
+    }
+    // Bounded column table, whatever the points (a tiny cluster with one
+    // far outlier asks for fine cells over a huge box).
+    while (shift < kMaxShift) {
+        const uint64_t perSide = (uint64_t(span) >> shift) + 1;
+        if (perSide * perSide <= 8 * n + 4096) break;
+        ++shift;
+    }
+    return shift;
 }
 
 }  // namespace
 
-struct VertexIndex::Impl {
-    std::vector<float> points;
-    std::unique_ptr<flann::KDTreeSingleIndex<flann::L2_Simple<float>>> tree;
-};
+VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
+    const size_t n = grid.size() / 3;
+    if (n == 0) return;
+    const auto bounds = std::minmax_element(grid.begin(), grid.end());
+    origin_ = *bounds.first;
+    const int64_t span = int64_t(*bounds.second) - origin_;
+    shift_ = cellShift >= 0 ? std::min(cellShift, kMaxShift) : chooseCellShift(grid, origin_, span);
+    cellWidth_ = int64_t(1) << shift_;
+    lastCell_ = span >> shift_;
+    const size_t perSide = size_t(lastCell_ + 1);
 
-VertexIndex::VertexIndex(const std::vector<int32_t>& grid) : impl_(new Impl) {
-    const size_t count = grid.size() / 3;
-    present_ = count;
-    if (count == 0) return;
-    impl_->points.assign(grid.begin(), grid.end());
-    flann::Matrix<float> matrix(impl_->points.data(), count, 3);
-    impl_->tree.reset(new flann::KDTreeSingleIndex<flann::L2_Simple<float>>(
-        matrix, flann::KDTreeSingleIndexParams(8, /*reorder=*/true)));
-    impl_->tree->buildIndex();
+    // Vertices by column (counting sort), then by z within each column.
+    auto cellOf = [&](int32_t coordinate) { return (int64_t(coordinate) - origin_) >> shift_; };
+    auto columnOf = [&](size_t v) { return size_t(cellOf(grid[3 * v])) * perSide + size_t(cellOf(grid[3 * v + 1])); };
+    std::vector<uint32_t> columnFirst(perSide * perSide + 1, 0);
+    for (size_t v = 0; v < n; ++v) ++columnFirst[columnOf(v) + 1];
+    for (size_t c = 1; c < columnFirst.size(); ++c) columnFirst[c] += columnFirst[c - 1];
+    slots_.resize(n);
+    {
+        std::vector<uint32_t> fill(columnFirst.begin(), columnFirst.end() - 1);
+        for (size_t v = 0; v < n; ++v) slots_[fill[columnOf(v)]++] = uint32_t(v);
+    }
+    auto zCell = [&](uint32_t v) { return int32_t(cellOf(grid[3 * size_t(v) + 2])); };
+    columnStart_.resize(perSide * perSide + 1);
+    for (size_t column = 0; column + 1 < columnFirst.size(); ++column) {
+        columnStart_[column] = uint32_t(cellZ_.size());
+        const auto begin = slots_.begin() + columnFirst[column], end = slots_.begin() + columnFirst[column + 1];
+        std::sort(begin, end, [&](uint32_t a, uint32_t b) { return zCell(a) != zCell(b) ? zCell(a) < zCell(b) : a < b; });
+        for (auto it = begin; it != end; ++it)
+            if (it == begin || zCell(*it) != zCell(*(it - 1))) {
+                cellZ_.push_back(zCell(*it));
+                cellStart_.push_back(uint32_t(it - slots_.begin()));
+                cellPresent_.push_back(0);
+            }
+    }
+    columnStart_.back() = uint32_t(cellZ_.size());
+    slotOf_.resize(n);
+    cellOfVertex_.resize(n);
+    for (size_t c = 0; c < cellStart_.size(); ++c) {
+        const uint32_t end = c + 1 < cellStart_.size() ? cellStart_[c + 1] : uint32_t(n);
+        cellPresent_[c] = end - cellStart_[c];
+        for (uint32_t slot = cellStart_[c]; slot < end; ++slot) {
+            slotOf_[slots_[slot]] = slot;
+            cellOfVertex_[slots_[slot]] = uint32_t(c);
+        }
+    }
+    present_.resize(n);
+    presentSlot_.resize(n);
+    for (size_t v = 0; v < n; ++v) present_[v] = presentSlot_[v] = uint32_t(v);
 }
 
-VertexIndex::~VertexIndex() = default;
-
 void VertexIndex::remove(uint32_t v) {
-    if (!impl_->tree) return;
-    impl_->tree->removePoint(v);
-    --present_;
+    if (v >= presentSlot_.size() || presentSlot_[v] == kRemoved) return;
+    // Swap v behind the present vertices of its cell...
+    const uint32_t c = cellOfVertex_[v];
+    const uint32_t last = cellStart_[c] + --cellPresent_[c];
+    const uint32_t other = slots_[last];
+    slots_[slotOf_[v]] = other;
+    slotOf_[other] = slotOf_[v];
+    slots_[last] = v;
+    slotOf_[v] = last;
+    // ...and out of the list of all present vertices.
+    const uint32_t at = presentSlot_[v], moved = present_.back();
+    present_[at] = moved;
+    presentSlot_[moved] = at;
+    present_.pop_back();
+    presentSlot_[v] = kRemoved;
 }
 
 void VertexIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const {
     out.clear();
-    if (!impl_->tree || present_ == 0) return;
-    const float query[3] = {float(q.x), float(q.y), float(q.z)};
-    const double r2 = std::min(paddedRadius2(radius), double(std::numeric_limits<float>::max()));
-    CollectWithin collector(float(r2), out);
-    impl_->tree->findNeighbors(collector, query, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0.0f));
+    if (present_.empty()) return;
+    // A box of cells around the ball, one unit wider than it so that float
+    // rounding of q and radius cannot drop a vertex on its surface.
+    const double reach = radius + 1.0;
+    const double top = double(lastCell_ + 1) * double(int64_t(1) << shift_);
+    if (!(reach < top)) {  // also NaN
+        collectAll(out);
+        return;
+    }
+    int64_t lo[3], hi[3];
+    const double center[3] = {q.x - double(origin_), q.y - double(origin_), q.z - double(origin_)};
+    int64_t boxCells = 1;
+    for (int k = 0; k < 3; ++k) {
+        const double a = std::max(center[k] - reach, -1.0), b = std::min(center[k] + reach, top);
+        if (!(a <= b)) return;  // the ball misses the grid
+        lo[k] = std::max<int64_t>(int64_t(std::floor(a)), 0) >> shift_;
+        hi[k] = std::min<int64_t>(int64_t(std::floor(b)) >> shift_, lastCell_);
+        if (lo[k] > hi[k]) return;
+        boxCells *= hi[k] - lo[k] + 1;
+    }
+    if (uint64_t(boxCells) > 2 * present_.size() + 64) {
+        collectAll(out);
+        return;
+    }
+    // The box's corner cells may miss the ball: the cells are tested against
+    // it in fixed point, the centre rounded and the radius padded by the
+    // unit already added (so rounding cannot drop a vertex).
+    const FixedPoint p{int64_t(std::floor(center[0] * kSubUnits + 0.5)), int64_t(std::floor(center[1] * kSubUnits + 0.5)),
+                       int64_t(std::floor(center[2] * kSubUnits + 0.5))};  // relative to the origin, as cells are
+    const int64_t bound = int64_t(std::ceil(reach * kSubUnits)) + 1;
+    auto append = [&out](const uint32_t* first, size_t count) { out.insert(out.end(), first, first + count); };
+    for (int64_t x = lo[0]; x <= hi[0]; ++x)
+        for (int64_t y = lo[1]; y <= hi[1]; ++y)
+            forEachCellOfColumn(p, x, y, lo[2], hi[2], false, bound * bound, append);
 }
 
-double VertexIndex::radiusHolding(Vec3 q, size_t k) const {
-    if (!impl_->tree || k == 0 || present_ < k) return std::numeric_limits<double>::infinity();
-    // FLANN's k-nearest result set inserts in O(k); beyond a few dozen
-    // neighbours a smaller estimate, grown by the caller, is much cheaper.
-    k = std::min<size_t>(k, 48);
-    const float query[3] = {float(q.x), float(q.y), float(q.z)};
-    flann::KNNSimpleResultSet<float> nearest(k);
-    impl_->tree->findNeighbors(nearest, query, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0.0f));
-    const double worst = nearest.worstDist();
-    if (!(worst < std::numeric_limits<float>::max())) return std::numeric_limits<double>::infinity();
-    return std::sqrt(worst) + 2.0;
+VertexIndex::CellCoord VertexIndex::cellOfPoint(const FixedPoint& p) const {  // p relative to the origin
+    const int s = kSubUnitBits + shift_;
+    return {floorShift(p.x, s), floorShift(p.y, s), floorShift(p.z, s)};
 }
+
+int VertexIndex::firstRing(const FixedPoint& p) const {
+    const CellCoord c = cellOfPoint(relative(p));
+    int64_t ring = 0;
+    for (int64_t x : {c.x, c.y, c.z}) ring = std::max({ring, -x, x - lastCell_});
+    return int(std::min<int64_t>(ring, int64_t(1) << 30));
+}
+
+bool VertexIndex::ringIsCheap(int ring) const {
+    const uint64_t cells = ring == 0 ? 1 : 24 * uint64_t(ring) * uint64_t(ring) + 2;
+    return cells <= 2 * present_.size() + 64;
+}
+
+int64_t VertexIndex::clearance2(const FixedPoint& p, int ring) const {
+    // A vertex outside the rings has, on some axis, a coordinate at most one
+    // below the rings' lowest cell or at least the first cell above them.
+    const FixedPoint local = relative(p);
+    const CellCoord c = cellOfPoint(local);
+    const int64_t width = int64_t(1) << shift_;
+    int64_t gap = INT64_MAX;
+    const int64_t at[3] = {local.x, local.y, local.z}, cell[3] = {c.x, c.y, c.z};
+    for (int k = 0; k < 3; ++k) {
+        const int64_t below = ((cell[k] - ring) * width - 1) * kSubUnits;
+        const int64_t above = (cell[k] + ring + 1) * width * kSubUnits;
+        gap = std::min({gap, at[k] - below, above - at[k]});
+    }
+    return gap * gap;
+}
+
+bool VertexIndex::ringsCoverGrid(const FixedPoint& p, int ring) const {
+    const CellCoord c = cellOfPoint(relative(p));
+    for (int64_t x : {c.x, c.y, c.z})
+        if (x - ring > 0 || x + ring < lastCell_) return false;
+    return true;
+}
+
+void VertexIndex::collectAll(std::vector<uint32_t>& out) const { out.insert(out.end(), present_.begin(), present_.end()); }
 
 }  // namespace drm

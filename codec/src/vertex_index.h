@@ -1,15 +1,22 @@
-// The candidate set: a FLANN kd-tree over the quantized vertices, from which
-// culled vertices are removed as the traversal closes their fans.
+// The candidate set: the quantized vertices bucketed into a uniform grid of
+// cubic cells, from which culled vertices are removed as the traversal
+// closes their fans (the paper's vertex culling).
 //
-// FLANN works in single precision, so it is used only to gather a superset of
-// the vertices near a point; every decision that encoder and decoder must
-// agree on (inside a radius, rank order) is made afterwards by exact tests on
-// the integer grid coordinates.
+// Every question is answered from the integer grid coordinates, so searches
+// need no tolerance. Only occupied cells are stored (a surface occupies a
+// vanishing share of a dense cell array), found through a dense table of
+// columns; the cell size is chosen from the data so that an occupied cell
+// holds a few vertices: the searches around an edge then look at a few
+// dozen vertices.
+//
+// Searches return candidates only: admissibility and the exact order are
+// decided by the callers (rank_search, predictor), which is also why the
+// cell size can never change a decoded mesh, only the speed.
 #ifndef DRM_VERTEX_INDEX_H
 #define DRM_VERTEX_INDEX_H
 
+#include <algorithm>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "exact_math.h"
@@ -18,30 +25,107 @@ namespace drm {
 
 class VertexIndex {
 public:
-    explicit VertexIndex(const std::vector<int32_t>& grid);
-    ~VertexIndex();
-    VertexIndex(const VertexIndex&) = delete;
-    VertexIndex& operator=(const VertexIndex&) = delete;
+    // grid: x, y, z per vertex. Cells are
+    // 2^cellShift units wide; by default the size suits the data (tests
+    // force others: no answer may depend on it).
+    static constexpr int kChooseCellSize = -1;
+    explicit VertexIndex(const std::vector<int32_t>& grid, int cellShift = kChooseCellSize);
 
-    // Takes v out of every later search (the paper's vertex culling).
+    // Takes v out of every later search. Removing a vertex twice is a no-op.
     void remove(uint32_t v);
-    size_t presentCount() const { return present_; }
+    size_t presentCount() const { return present_.size(); }
 
     // Appends to out every present vertex whose distance from q is at most
-    // radius (grid units), plus possibly some slightly farther ones: callers
-    // apply their own exact test. out is cleared first.
+    // radius (grid units), plus possibly some farther ones: callers apply
+    // their own exact test. out is cleared first.
     void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const;
 
-    // A radius that holds at least k present vertices around q (an
-    // estimate from the float search, padded); infinity if fewer than k
-    // vertices are present.
-    double radiusHolding(Vec3 q, size_t k) const;
+    // Rings of cells around a fixed-point location, for exact nearest
+    // searches: ring r holds the cells at Chebyshev cell distance r from the
+    // cell of p. Every present vertex outside rings 0..r lies at a squared
+    // fixed-point distance of at least clearance2(p, r) from p.
+    int firstRing(const FixedPoint& p) const;  // rings before it hold no cell of the grid
+    bool ringIsCheap(int ring) const;          // else scan everything with collectAll
+    // Calls visit(first, count) with the present vertices of each cell of
+    // the ring that has a point within squared fixed-point distance bound2
+    // of p (cells farther away cannot hold anything nearer).
+    template <class Visit>
+    void forEachCellOfRing(const FixedPoint& p, int ring, int64_t bound2, Visit visit) const;
+    int64_t clearance2(const FixedPoint& p, int ring) const;
+    bool ringsCoverGrid(const FixedPoint& p, int ring) const;  // rings 0..ring hold every cell
+    void collectAll(std::vector<uint32_t>& out) const;         // appends every present vertex
+
+    int cellShift() const { return shift_; }
 
 private:
-    struct Impl;
-    std::unique_ptr<Impl> impl_;
-    size_t present_ = 0;
+    struct CellCoord {
+        int64_t x, y, z;
+    };
+    // Cells are counted from the smallest coordinate of the grid.
+    FixedPoint relative(const FixedPoint& p) const {
+        return {p.x - origin_ * kSubUnits, p.y - origin_ * kSubUnits, p.z - origin_ * kSubUnits};
+    }
+    CellCoord cellOfPoint(const FixedPoint& p) const;  // p relative to the origin
+    // Fixed-point distance from p to the nearest point of cell `cell`
+    // along one axis (p relative to the origin).
+    int64_t gap(int64_t p, int64_t cell) const {
+        const int64_t lo = cell * cellWidth_ * kSubUnits, hi = (cell * cellWidth_ + cellWidth_ - 1) * kSubUnits;
+        return p < lo ? lo - p : (p > hi ? p - hi : 0);
+    }
+    // Calls visit for the cells (x, y, z), z0 <= z <= z1 (or only z0 and z1
+    // when capsOnly), within bound2 of p (relative to the origin).
+    template <class Visit>
+    void forEachCellOfColumn(const FixedPoint& p, int64_t x, int64_t y, int64_t z0, int64_t z1, bool capsOnly,
+                             int64_t bound2, Visit& visit) const {
+        if (x < 0 || y < 0 || x > lastCell_ || y > lastCell_) return;
+        const int64_t gx = gap(p.x, x), gy = gap(p.y, y), xy2 = gx * gx + gy * gy;
+        if (xy2 > bound2) return;
+        const size_t column = size_t(x) * size_t(lastCell_ + 1) + size_t(y);
+        for (uint32_t c = columnStart_[column], end = columnStart_[column + 1]; c < end; ++c) {
+            const int64_t z = cellZ_[c];
+            if (z > z1) break;
+            if (z < z0 || (capsOnly && z != z0 && z != z1) || cellPresent_[c] == 0) continue;
+            const int64_t gz = gap(p.z, z);
+            if (xy2 + gz * gz <= bound2) visit(slots_.data() + cellStart_[c], size_t(cellPresent_[c]));
+        }
+    }
+
+    int shift_ = 0;         // a cell is 2^shift grid units wide
+    int64_t cellWidth_ = 1;
+    int64_t origin_ = 0;    // the smallest coordinate
+    int64_t lastCell_ = -1; // cells per axis - 1
+    // Occupied cells in (x, y, z) order: those of column (x, y) are
+    // columnStart_[x * (lastCell_ + 1) + y] .. columnStart_[... + 1] - 1, by
+    // increasing z. A dense table of columns costs about as much as the
+    // cells themselves (a surface crosses most columns a few times) and
+    // finds a whole row of cells with one look-up.
+    std::vector<uint32_t> columnStart_;
+    std::vector<int32_t> cellZ_;
+    // The vertices of cell c are slots_[cellStart_[c] ..
+    // cellStart_[c] + cellPresent_[c]): present ones first.
+    std::vector<uint32_t> cellStart_, cellPresent_;
+    std::vector<uint32_t> slots_, slotOf_, cellOfVertex_;
+    // Every present vertex, for searches that would visit more cells than
+    // there are vertices left.
+    std::vector<uint32_t> present_, presentSlot_;
 };
+
+template <class Visit>
+void VertexIndex::forEachCellOfRing(const FixedPoint& p, int ring, int64_t bound2, Visit visit) const {
+    if (present_.empty()) return;
+    const FixedPoint local = relative(p);
+    const CellCoord c = cellOfPoint(local);
+    const int64_t r = ring;
+    const int64_t x0 = std::max<int64_t>(c.x - r, 0), x1 = std::min(c.x + r, lastCell_);
+    const int64_t y0 = std::max<int64_t>(c.y - r, 0), y1 = std::min(c.y + r, lastCell_);
+    for (int64_t x = x0; x <= x1; ++x)
+        for (int64_t y = y0; y <= y1; ++y) {
+            // Columns on the ring's sides hold all its z; inner ones only
+            // the two caps.
+            const bool side = x == c.x - r || x == c.x + r || y == c.y - r || y == c.y + r;
+            forEachCellOfColumn(local, x, y, c.z - r, c.z + r, !side, bound2, visit);
+        }
+}
 
 }  // namespace drm
 

@@ -50,7 +50,7 @@ TEST(RankSearch, MatchesBruteForceWithManyTies) {
     const int bits = 12;
     for (int trial = 0; trial < 20; ++trial) {
         Scene s = randomScene(rng, 400, 12);  // 400 points on a 13^3 grid: many duplicates and ties
-        RankSearch search(s.grid, bits, *s.index, *s.admissible);
+        RankSearch search(s.grid, *s.index, *s.admissible);
         std::uniform_real_distribution<double> at(-3.0, 15.0);
         for (int q = 0; q < 30; ++q) {
             OpenEdge edge{uint32_t(rng() % 400), uint32_t(rng() % 400), 0};
@@ -81,7 +81,7 @@ TEST(RankSearch, FarPredictionsAndLargeGrids) {
     std::mt19937 rng(7);
     const int bits = 21;
     Scene s = randomScene(rng, 300, (1 << bits) - 1);
-    RankSearch search(s.grid, bits, *s.index, *s.admissible);
+    RankSearch search(s.grid, *s.index, *s.admissible);
     const OpenEdge edge{0, 1, 2};
     // Predictions far outside the box are clamped, never overflow.
     for (Vec3 p : {Vec3{-1e12, 5, 5}, Vec3{3e9, -4e9, 1e10}, Vec3{1048576.25, 7.5, 2097151}}) {
@@ -109,7 +109,7 @@ TEST(RankSearch, CulledVerticesAreNotCandidates) {
     for (uint32_t v = 0; v < 4; ++v) EXPECT_TRUE(traversal.isCulled(v));
     EXPECT_EQ(index.presentCount(), 2u);
     Admissibility admissible(traversal, false);
-    RankSearch search(grid, 12, index, admissible);
+    RankSearch search(grid, index, admissible);
     const OpenEdge loose{4, 5, 4};  // an edge that is not in the mesh: only candidates matter
     EXPECT_THROW(search.vertexOfRank(FixedPoint(), 1, loose), Error);
     const OpenEdge other{0, 1, 2};
