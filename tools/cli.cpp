@@ -63,7 +63,8 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 }
 
 const std::vector<std::string>& encodeOptionNames() {
-    static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers"};
+    static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers",
+                                                   "--refine-bits"};
     return names;
 }
 
@@ -72,18 +73,25 @@ const std::vector<std::string>& encodeFlagNames() {
     return names;
 }
 
+namespace {
+
+int wholeNumber(const Arguments& args, const char* name) {
+    const std::string text = args.value(name);
+    errno = 0;
+    char* end = nullptr;
+    const long value = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno != 0 || value < -1000000 || value > 1000000)
+        throw UsageError(std::string(name) + " needs a whole number, not '" + text + "'");
+    return int(value);
+}
+
+}  // namespace
+
 drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
     drm::EncodeOptions options;
     options.keepVertexOrder = args.has("--keep-vertex-order");
-    if (args.has("--bits")) {
-        const std::string text = args.value("--bits");
-        errno = 0;
-        char* end = nullptr;
-        const long bits = std::strtol(text.c_str(), &end, 10);
-        if (text.empty() || *end != '\0' || errno != 0 || bits < -1000000 || bits > 1000000)
-            throw UsageError("--bits needs a whole number, not '" + text + "'");
-        options.bits = int(bits);
-    }
+    if (args.has("--bits")) options.bits = wholeNumber(args, "--bits");
+    if (args.has("--refine-bits")) options.refineBits = wholeNumber(args, "--refine-bits");
     try {
         if (args.has("--predictor")) options.predictor = drm::parsePredictor(args.value("--predictor"));
         if (args.has("--geometry")) options.geometry = drm::parseGeometryCoder(args.value("--geometry"));

@@ -34,7 +34,7 @@ const char* const kBenchHelp =
     "options:\n"
     "  --csv F        also write the table as CSV to F\n"
     "  --markdown F   also write the table as Markdown to F\n"
-    "  --bits, --predictor, --curvature, --geometry, --keep-vertex-order\n"
+    "  --bits, --predictor, --curvature, --geometry, --refine-bits, --keep-vertex-order\n"
     "                 as for 'drm encode'\n";
 
 namespace {

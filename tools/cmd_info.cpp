@@ -18,7 +18,8 @@ const char* const kInfoHelp =
     "\n"
     "options:\n"
     "  --json   one JSON object with the keys vertices, faces, components,\n"
-    "           boundary_edges, bits, predictor, curvature, geometry, levers,\n"
+    "           boundary_edges, bits, predictor, curvature, geometry,\n"
+    "           refine_bits (low bits of the refine coder, 0 otherwise), levers,\n"
     "           header_bytes, connectivity_bytes, geometry_bytes,\n"
     "           vertex_order_bytes, total_bytes,\n"
     "           connectivity_bpv, geometry_bpv, total_bpv, rank_histogram\n"
@@ -77,6 +78,7 @@ void printJson(const std::string& path, const drm::Stats& s) {
     field("predictor", jsonString(drm::predictorName(s.predictor)));
     field("curvature", boolean(s.curvature));
     field("geometry", jsonString(drm::geometryCoderName(s.geometry)));
+    field("refine_bits", std::to_string(s.refineBits));
     field("levers", "{\"topological_filter\": " + boolean(s.levers.topologicalFilter) +
                         ", \"gap_closing\": " + boolean(s.levers.gapClosing) +
                         ", \"confidence_context\": " + boolean(s.levers.confidenceContext) +
@@ -113,7 +115,9 @@ void printText(const std::string& path, const drm::Stats& s) {
     row("bits per axis", std::to_string(s.bits));
     row("predictor", drm::predictorName(s.predictor));
     row("curvature", s.curvature ? "on" : "off");
-    row("geometry coder", drm::geometryCoderName(s.geometry));
+    row("geometry coder", s.refineBits > 0 ? std::string(drm::geometryCoderName(s.geometry)) + " (" +
+                                                  std::to_string(s.refineBits) + " low bits)"
+                                            : std::string(drm::geometryCoderName(s.geometry)));
     row("levers", leverList(s.levers));
     row("header bytes", std::to_string(s.headerBytes));
     row("connectivity bytes", bytesAndRate(s.connectivityBytes, s.connectivityBitsPerVertex()));

@@ -27,14 +27,15 @@ const char* geometryCoderName(GeometryCoder g) {
     switch (g) {
         case GeometryCoder::Raw: return "raw";
         case GeometryCoder::SpanningTree: return "tree";
+        case GeometryCoder::Refine: return "refine";
     }
     return "unknown";
 }
 
 GeometryCoder parseGeometryCoder(const std::string& name) {
-    for (GeometryCoder g : {GeometryCoder::SpanningTree, GeometryCoder::Raw})
+    for (GeometryCoder g : {GeometryCoder::SpanningTree, GeometryCoder::Raw, GeometryCoder::Refine})
         if (name == geometryCoderName(g)) return g;
-    throw Error("unknown geometry coder '" + name + "' (use tree or raw)");
+    throw Error("unknown geometry coder '" + name + "' (use tree, refine or raw)");
 }
 
 Levers parseLevers(const std::string& list) {

@@ -6,6 +6,7 @@
 
 #include "file_format.h"
 #include "geometry_raw.h"
+#include "geometry_refine.h"
 #include "geometry_tree.h"
 #include "edge_model.h"
 #include "progress.h"
@@ -27,9 +28,19 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     Decoded result;
     result.grid = header.grid;
     progress.stage("decoding vertices", 0.01);
-    result.quantized = header.geometryCoder == GeometryCoder::Raw
-                           ? unpackGrid(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits)
-                           : decodeGeometryTree(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits);
+    // Refine: the coarse grid now (the connectivity is ranked on it), the
+    // low bits after the connectivity.
+    RefinePayload refine;
+    if (header.geometryCoder == GeometryCoder::Refine) {
+        refine = readRefinePayload(parts.geometry, parts.geometrySize, header.grid.bits);
+        result.quantized = decodeGeometryTree(refine.tree, refine.treeSize, header.vertexCount,
+                                              header.grid.bits - refine.lowBits);
+    } else {
+        result.quantized = header.geometryCoder == GeometryCoder::Raw
+                               ? unpackGrid(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits)
+                               : decodeGeometryTree(parts.geometry, parts.geometrySize, header.vertexCount,
+                                                    header.grid.bits);
+    }
 
     const size_t vertexCount = size_t(header.vertexCount);
     // A mesh that was cut into manifold pieces: the traversal also sees the
@@ -52,7 +63,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     const size_t expectedFaces = std::min<size_t>(faceCount, size_t(1) << 16);
     VertexIndex candidates(result.quantized);
     Traversal traversal(traversalVertices, expectedFaces, &candidates);
-    EdgeModel model(result.quantized, header.grid.bits, header.predictor, header.curvature, header.levers,
+    EdgeModel model(result.quantized, header.grid.bits - refine.lowBits, header.predictor, header.curvature, header.levers,
                     faceCount, candidates, traversal);
     RankDecoder coder(parts.connectivity, parts.connectivitySize, model.contextCount());
     Stats& stats = result.stats;
@@ -102,6 +113,15 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
                     std::to_string(faceCount));
 
     result.mesh.triangles = traversal.triangles();
+    if (refine.lowBits > 0) {
+        progress.stage("refining vertices", 0.95);
+        std::vector<uint32_t> triangles = result.mesh.triangles;
+        for (uint32_t& v : triangles)
+            if (v >= vertexCount) v = copyOf[v - vertexCount];
+        const std::vector<int32_t> coarse(result.quantized.begin(), result.quantized.begin() + 3 * vertexCount);
+        const std::vector<int32_t> fine = decodeRefinement(refine, coarse, triangles);
+        std::copy(fine.begin(), fine.end(), result.quantized.begin());
+    }
     if (repairs) {
         // Undo the cut: copies back to their originals, turned faces back
         // over, then the repeated faces and the faces that repeat a vertex.
@@ -150,6 +170,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
     stats.connectivityBytes = parts.connectivitySize;
     stats.geometryBytes = parts.geometrySize;
     stats.geometry = header.geometryCoder;
+    stats.refineBits = refine.lowBits;
     stats.vertexOrderBytes = parts.vertexOrderSize;
     stats.repairBytes = parts.repairsSize;
     stats.splitVertices = copyOf.size();

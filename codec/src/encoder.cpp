@@ -6,6 +6,7 @@
 
 #include "file_format.h"
 #include "geometry_raw.h"
+#include "geometry_refine.h"
 #include "geometry_tree.h"
 #include "manifold_cut.h"
 #include "mesh_check.h"
@@ -33,9 +34,11 @@ struct PreparedMesh {
     Grid grid;
     std::vector<int32_t> quantized;   // input order
     GeometryCoder geometryCoder = GeometryCoder::SpanningTree;
-    std::vector<uint8_t> geometry;    // the geometry section
+    std::vector<uint8_t> geometry;    // the geometry section (Refine: the coarse tree alone)
+    int lowBits = 0;                  // Refine: the low bits the refinement codes
+    std::vector<int32_t> fineDecoded; // Refine: the full grid of the vertices, decoded order
     std::vector<uint32_t> order;      // decoded index -> input index
-    std::vector<int32_t> decodedGrid; // decoded order
+    std::vector<int32_t> decodedGrid; // decoded order (Refine: the coarse grid)
     // The traversal's mesh: the input cut into manifold pieces (the input
     // itself when it needed no repair), over decoded indices; vertices from
     // order.size() on are copies. No positions, only their count.
@@ -68,7 +71,7 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     const size_t duplicateCount = prepared.repairs.duplicateOf.size();
     VertexIndex candidates(grid);
     Traversal traversal(mesh.vertexCount(), faceCount, &candidates);
-    EdgeModel model(grid, options.bits, predictor, options.curvature, options.levers, faceCount,
+    EdgeModel model(grid, options.bits - prepared.lowBits, predictor, options.curvature, options.levers, faceCount,
                     candidates, traversal);
     RankEncoder coder(model.contextCount());
 
@@ -143,7 +146,19 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
         for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
         repairs = encodeRepairs(inDecodedOrder, header.vertexCount);
     }
-    result.bytes = writeFile(header, connectivity, prepared.geometry, vertexOrder, repairs, &headerBytes);
+    std::vector<uint8_t> refined;
+    if (prepared.lowBits > 0) {
+        // The low bits, predicted across the triangles as the decoder
+        // rebuilds them (vertex copies stand for their originals).
+        std::vector<uint32_t> triangles = traversal.triangles();
+        for (uint32_t& v : triangles)
+            if (v >= header.vertexCount) v = prepared.repairs.copyOf[v - header.vertexCount];
+        refined = writeRefinePayload(prepared.lowBits,
+                                     encodeRefinement(prepared.fineDecoded, prepared.lowBits, triangles),
+                                     prepared.geometry);
+    }
+    const std::vector<uint8_t>& geometry = prepared.lowBits > 0 ? refined : prepared.geometry;
+    result.bytes = writeFile(header, connectivity, geometry, vertexOrder, repairs, &headerBytes);
 
     stats.vertices = header.vertexCount;
     stats.faces = header.faceCount;
@@ -155,8 +170,9 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     stats.levers = options.levers;
     stats.headerBytes = headerBytes;
     stats.connectivityBytes = connectivity.size();
-    stats.geometryBytes = prepared.geometry.size();
+    stats.geometryBytes = geometry.size();
     stats.geometry = prepared.geometryCoder;
+    stats.refineBits = prepared.lowBits;
     stats.vertexOrderBytes = vertexOrder.size();
     stats.repairBytes = repairs.size();
     stats.splitVertices = prepared.repairs.copyOf.size();
@@ -165,6 +181,89 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     stats.repeatedFaces = duplicateCount;
     stats.totalBytes = result.bytes.size();
     return result;
+}
+
+// Codes the vertex set with the given coder (lowBits > 0: Refine), numbers
+// the cut mesh in its decoded order and encodes the connectivity.
+Encoded encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const ManifoldCut& cut,
+                           const EncodeOptions& options, int lowBits, ProgressReporter& progress) {
+    progress.stage("coding vertices", 0.01);
+    prepared.lowBits = lowBits;
+    const std::vector<int32_t> coarse = lowBits > 0 ? coarsenGrid(prepared.quantized, lowBits) : std::vector<int32_t>();
+    const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : prepared.quantized;
+    prepared.geometryCoder = GeometryCoder::Raw;
+    if (lowBits == 0) prepared.geometry = packGrid(prepared.quantized, options.bits);
+    if (options.geometry == GeometryCoder::SpanningTree || options.geometry == GeometryCoder::Refine) {
+        // Scattered points (a soup of random triangles) predict no better
+        // than raw bits: keep whichever section is smaller.
+        GeometryEncoding tree = encodeGeometryTree(vertexGrid, options.bits - lowBits);
+        if (lowBits > 0 || tree.bytes.size() < prepared.geometry.size()) {
+            prepared.geometryCoder = lowBits > 0 ? GeometryCoder::Refine : GeometryCoder::SpanningTree;
+            prepared.geometry = std::move(tree.bytes);
+            prepared.order = std::move(tree.order);
+        }
+    }
+    if (prepared.geometryCoder == GeometryCoder::Raw) {
+        prepared.order.resize(mesh.vertexCount());
+        for (size_t v = 0; v < prepared.order.size(); ++v) prepared.order[v] = uint32_t(v);
+    }
+    if (lowBits > 0) {
+        prepared.fineDecoded.resize(3 * prepared.order.size());
+        for (size_t d = 0; d < prepared.order.size(); ++d)
+            for (int k = 0; k < 3; ++k)
+                prepared.fineDecoded[3 * d + k] = prepared.quantized[3 * size_t(prepared.order[d]) + k];
+    }
+    // Decoded indices: the geometry coder's order, then the copies in the
+    // cut's order (each at its original's position).
+    const size_t copies = cut.copyOf.size();
+    std::vector<uint32_t> decodedIndex(mesh.vertexCount() + copies);
+    prepared.decodedGrid.resize(3 * decodedIndex.size());
+    for (size_t d = 0; d < prepared.order.size(); ++d) {
+        decodedIndex[prepared.order[d]] = uint32_t(d);
+        for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = vertexGrid[3 * size_t(prepared.order[d]) + k];
+    }
+    // Copies are numbered in the decoded order of their originals, so the
+    // repairs section can list the originals as small differences.
+    std::vector<uint32_t> copiesByOriginal(copies);
+    for (size_t c = 0; c < copies; ++c) copiesByOriginal[c] = uint32_t(c);
+    std::stable_sort(copiesByOriginal.begin(), copiesByOriginal.end(), [&](uint32_t x, uint32_t y) {
+        return decodedIndex[cut.copyOf[x]] < decodedIndex[cut.copyOf[y]];
+    });
+    prepared.repairs.copyOf.resize(copies);
+    for (size_t r = 0; r < copies; ++r) {
+        const uint32_t c = copiesByOriginal[r], original = cut.copyOf[c];
+        const size_t d = mesh.vertexCount() + r;
+        decodedIndex[mesh.vertexCount() + c] = uint32_t(d);
+        prepared.repairs.copyOf[r] = decodedIndex[original];
+        for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = vertexGrid[3 * size_t(original) + k];
+    }
+    prepared.repairs.looseTriangles.resize(cut.looseTriangles.size());
+    for (size_t c = 0; c < cut.looseTriangles.size(); ++c)
+        prepared.repairs.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
+    prepared.renumbered.triangles.resize(cut.triangles.size());
+    for (size_t c = 0; c < cut.triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[cut.triangles[c]];
+    prepared.renumbered.positions.resize(prepared.decodedGrid.size());  // only its size matters to the checks
+    try {
+        prepared.topology = checkMesh(prepared.renumbered);
+    } catch (const Error& e) {
+        throw Error(std::string("internal error: the mesh cut into manifold pieces is still not codable: ") + e.what());
+    }
+
+    prepared.predictor = options.predictor;
+    if (prepared.predictor == Predictor::Auto) {
+        progress.stage("choosing predictor", 0.04);
+        prepared.predictor = countPredictorVotes(prepared.renumbered, prepared.topology, prepared.decodedGrid).winner();
+    }
+    Encoded best = encodeOnce(prepared.renumbered, prepared, options, progress);
+    const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
+                          options.levers.confidenceContext || options.levers.angleOrder;
+    if (options.tryWithoutLevers && anyLever && prepared.renumbered.faceCount() < kTryWithoutLeversBelowFaces) {
+        EncodeOptions plain = options;
+        plain.levers = Levers::none();
+        Encoded alternative = encodeOnce(prepared.renumbered, prepared, plain, progress);
+        if (alternative.bytes.size() < best.bytes.size()) best = std::move(alternative);
+    }
+    return best;
 }
 
 }  // namespace
@@ -201,77 +300,33 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     prepared.repairs.duplicateOf = std::move(cut.duplicateOf);
     prepared.repairs.duplicateReversed = std::move(cut.duplicateReversed);
 
-    progress.stage("coding vertices", 0.01);
-    if (options.geometry != GeometryCoder::SpanningTree && options.geometry != GeometryCoder::Raw)
+    if (options.geometry != GeometryCoder::SpanningTree && options.geometry != GeometryCoder::Raw &&
+        options.geometry != GeometryCoder::Refine)
         throw Error("unknown geometry coder " + std::to_string(int(options.geometry)));
-    prepared.geometryCoder = GeometryCoder::Raw;
-    prepared.geometry = packGrid(prepared.quantized, options.bits);
-    if (options.geometry == GeometryCoder::SpanningTree) {
-        // Scattered points (a soup of random triangles) predict no better
-        // than raw bits: keep whichever section is smaller.
-        GeometryEncoding tree = encodeGeometryTree(prepared.quantized, options.bits);
-        if (tree.bytes.size() < prepared.geometry.size()) {
-            prepared.geometryCoder = GeometryCoder::SpanningTree;
-            prepared.geometry = std::move(tree.bytes);
-            prepared.order = std::move(tree.order);
-        }
-    }
-    if (prepared.geometryCoder == GeometryCoder::Raw) {
-        prepared.order.resize(mesh.vertexCount());
-        for (size_t v = 0; v < prepared.order.size(); ++v) prepared.order[v] = uint32_t(v);
-    }
-    // Decoded indices: the geometry coder's order, then the copies in the
-    // cut's order (each at its original's position).
-    const size_t copies = cut.copyOf.size();
-    std::vector<uint32_t> decodedIndex(mesh.vertexCount() + copies);
-    prepared.decodedGrid.resize(3 * decodedIndex.size());
-    for (size_t d = 0; d < prepared.order.size(); ++d) {
-        decodedIndex[prepared.order[d]] = uint32_t(d);
-        for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = prepared.quantized[3 * size_t(prepared.order[d]) + k];
-    }
-    // Copies are numbered in the decoded order of their originals, so the
-    // repairs section can list the originals as small differences.
-    std::vector<uint32_t> copiesByOriginal(copies);
-    for (size_t c = 0; c < copies; ++c) copiesByOriginal[c] = uint32_t(c);
-    std::stable_sort(copiesByOriginal.begin(), copiesByOriginal.end(), [&](uint32_t x, uint32_t y) {
-        return decodedIndex[cut.copyOf[x]] < decodedIndex[cut.copyOf[y]];
-    });
-    prepared.repairs.copyOf.resize(copies);
-    for (size_t r = 0; r < copies; ++r) {
-        const uint32_t c = copiesByOriginal[r], original = cut.copyOf[c];
-        const size_t d = mesh.vertexCount() + r;
-        decodedIndex[mesh.vertexCount() + c] = uint32_t(d);
-        prepared.repairs.copyOf[r] = decodedIndex[original];
-        for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = prepared.quantized[3 * size_t(original) + k];
-    }
-    prepared.repairs.looseTriangles.resize(cut.looseTriangles.size());
-    for (size_t c = 0; c < cut.looseTriangles.size(); ++c)
-        prepared.repairs.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
-    prepared.renumbered.triangles.resize(cut.triangles.size());
-    for (size_t c = 0; c < cut.triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[cut.triangles[c]];
-    prepared.renumbered.positions.resize(prepared.decodedGrid.size());  // only its size matters to the checks
-    try {
-        prepared.topology = checkMesh(prepared.renumbered);
-    } catch (const Error& e) {
-        throw Error(std::string("internal error: the mesh cut into manifold pieces is still not codable: ") + e.what());
-    }
-
     if (options.predictor != Predictor::Auto && options.predictor != Predictor::Parallelogram &&
         options.predictor != Predictor::Midpoint)
         throw Error("unknown predictor " + std::to_string(int(options.predictor)));
-    prepared.predictor = options.predictor;
-    if (prepared.predictor == Predictor::Auto) {
-        progress.stage("choosing predictor", 0.04);
-        prepared.predictor = countPredictorVotes(prepared.renumbered, prepared.topology, prepared.decodedGrid).winner();
+    if (options.geometry == GeometryCoder::Refine &&
+        (options.refineBits < 0 || options.refineBits > std::min(kMaxRefineBits, options.bits - 1)))
+        throw Error("refinement bits " + std::to_string(options.refineBits) + " out of range 0.." +
+                    std::to_string(std::min(kMaxRefineBits, options.bits - 1)) + " at " +
+                    std::to_string(options.bits) + " bits");
+    if (options.geometry != GeometryCoder::Refine || options.refineBits > 0) {
+        Encoded result = encodeWithGeometry(mesh, prepared, cut, options,
+                                            options.geometry == GeometryCoder::Refine ? options.refineBits : 0,
+                                            progress);
+        progress.stage("done", 1.0);
+        return result;
     }
-    Encoded best = encodeOnce(prepared.renumbered, prepared, options, progress);
-    const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
-                          options.levers.confidenceContext || options.levers.angleOrder;
-    if (options.tryWithoutLevers && anyLever && prepared.renumbered.faceCount() < kTryWithoutLeversBelowFaces) {
-        EncodeOptions plain = options;
-        plain.levers = Levers::none();
-        Encoded alternative = encodeOnce(prepared.renumbered, prepared, plain, progress);
-        if (alternative.bytes.size() < best.bytes.size()) best = std::move(alternative);
+    // Refine with the low bits left to the encoder: the spanning tree alone,
+    // and 1 .. kMaxTriedRefineBits low bits (the sizes are not unimodal in
+    // the low bits: plane-holes grows at 1 and 2, shrinks at 3 to 5).
+    EncodeOptions tree = options;
+    tree.geometry = GeometryCoder::SpanningTree;
+    Encoded best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
+    for (int lowBits = 1; lowBits <= std::min(kMaxTriedRefineBits, options.bits - 1); ++lowBits) {
+        Encoded refined = encodeWithGeometry(mesh, prepared, cut, options, lowBits, progress);
+        if (refined.bytes.size() < best.bytes.size()) best = std::move(refined);
     }
     progress.stage("done", 1.0);
     return best;

@@ -62,7 +62,8 @@ FileHeader decodeHeader(ByteReader& in) {
     if (connectivity != uint8_t(ConnectivityCoder::RankRangeCoder))
         throw Error("unsupported file: unknown connectivity coder " + std::to_string(connectivity));
     const uint8_t geometry = in.u8("geometry coder");
-    if (geometry != uint8_t(GeometryCoder::Raw) && geometry != uint8_t(GeometryCoder::SpanningTree))
+    if (geometry != uint8_t(GeometryCoder::Raw) && geometry != uint8_t(GeometryCoder::SpanningTree) &&
+        geometry != uint8_t(GeometryCoder::Refine))
         throw Error("unsupported file: unknown geometry coder " + std::to_string(geometry));
     h.geometryCoder = GeometryCoder(geometry);
     for (double& o : h.grid.origin) o = in.f64("bounding box origin");

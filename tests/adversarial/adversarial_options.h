@@ -1,6 +1,6 @@
 // The encoder options every adversarial mesh is tried with: the defaults,
-// the kept vertex order, the raw geometry coder, and coarse grids on which
-// many vertices share a grid point.
+// the kept vertex order, the raw and refine geometry coders, and coarse grids
+// on which many vertices share a grid point.
 #ifndef DRM_TEST_ADVERSARIAL_OPTIONS_H
 #define DRM_TEST_ADVERSARIAL_OPTIONS_H
 
@@ -33,6 +33,19 @@ inline std::vector<NamedOptions> adversarialOptions() {
     add("bits4", [](drm::EncodeOptions& o) { o.bits = 4; });
     add("bits1_keep_order", [](drm::EncodeOptions& o) {
         o.bits = 1;
+        o.keepVertexOrder = true;
+    });
+    add("refine_k2", [](drm::EncodeOptions& o) {
+        o.geometry = drm::GeometryCoder::Refine;
+        o.refineBits = 2;
+    });
+    add("refine_bits4_k3", [](drm::EncodeOptions& o) {  // the connectivity is ranked on a 1-bit grid
+        o.geometry = drm::GeometryCoder::Refine;
+        o.bits = 4;
+        o.refineBits = 3;
+    });
+    add("refine_auto_keep_order", [](drm::EncodeOptions& o) {
+        o.geometry = drm::GeometryCoder::Refine;
         o.keepVertexOrder = true;
     });
     add("paper_method", [](drm::EncodeOptions& o) {

@@ -304,7 +304,7 @@ TEST(ChecksummedCorruption, OutOfRangeHeaderFieldsAreRefused) {
         {"connectivity coder 0", "unsupported", [](HeaderFields& h) { h.connectivityCoder = 0; }},
         {"connectivity coder 2", "unsupported", [](HeaderFields& h) { h.connectivityCoder = 2; }},
         {"geometry coder 0", "unsupported", [](HeaderFields& h) { h.geometryCoder = 0; }},
-        {"geometry coder 3", "unsupported", [](HeaderFields& h) { h.geometryCoder = 3; }},
+        {"geometry coder 4", "unsupported", [](HeaderFields& h) { h.geometryCoder = 4; }},
         {"geometry coder 255", "unsupported", [](HeaderFields& h) { h.geometryCoder = 255; }},
         {"origin x NaN", "corrupt", [=](HeaderFields& h) { h.origin[0] = nan; }},
         {"origin y +inf", "corrupt", [=](HeaderFields& h) { h.origin[1] = inf; }},
@@ -332,6 +332,8 @@ TEST(ChecksummedCorruption, OtherValidHeaderValuesAreRefusedOrSound) {
     std::vector<Change> changes = {
         {"predictors swapped", [](HeaderFields& h) { h.predictor = uint8_t(3 - h.predictor); }},
         {"geometry coders swapped", [](HeaderFields& h) { h.geometryCoder = uint8_t(3 - h.geometryCoder); }},
+        {"geometry coder 3 (refine) over another payload", [](HeaderFields& h) { h.geometryCoder = 3; }},
+        {"geometry coder 2 over a refine payload", [](HeaderFields& h) { if (h.geometryCoder == 3) h.geometryCoder = 2; }},
         {"smallest step", [](HeaderFields& h) { h.step = std::numeric_limits<double>::denorm_min(); }},
         {"step 1e300", [](HeaderFields& h) { h.step = 1e300; }},
         {"origin 1e308", [](HeaderFields& h) { h.origin[0] = 1e308; }},

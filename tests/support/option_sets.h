@@ -1,5 +1,5 @@
 // Encoder option sets that between them produce every header flag, both
-// predictors, both geometry coders, the vertex-order section and the
+// predictors, every geometry coder, the vertex-order section and the
 // extremes of the quantization range, so files made with them reach every
 // branch of the decoder. Shared by the seed corpus, the robustness tests and
 // the determinism check.
@@ -66,6 +66,23 @@ inline std::vector<NamedOptions> optionSets() {
         o.levers.angleOrder = true;
     });
     add("keep-order", [](drm::EncodeOptions& o) { o.keepVertexOrder = true; });
+    // The refine coder with its low bits fixed, so the file always holds it
+    // (left to the encoder, small meshes fall back to the spanning tree).
+    add("refine-k2", [](drm::EncodeOptions& o) {
+        o.geometry = drm::GeometryCoder::Refine;
+        o.refineBits = 2;
+    });
+    add("refine-bits4-k3", [](drm::EncodeOptions& o) {  // a 1-bit coarse grid: most points coincide
+        o.geometry = drm::GeometryCoder::Refine;
+        o.bits = 4;
+        o.refineBits = 3;
+    });
+    add("refine-k5-keep-order-curvature", [](drm::EncodeOptions& o) {
+        o.geometry = drm::GeometryCoder::Refine;
+        o.refineBits = 5;
+        o.keepVertexOrder = true;
+        o.curvature = true;
+    });
     add("keep-order-bits12-try-without", [](drm::EncodeOptions& o) {
         o.keepVertexOrder = true;
         o.tryWithoutLevers = true;

@@ -49,10 +49,14 @@ enum class GeometryCoder : uint8_t {
     Raw = 1,           // every grid coordinate in `bits` bits; keeps the input order
     SpanningTree = 2,  // predictive coding along a nearest-neighbour spanning tree
                        // (the encoder falls back to raw where that is smaller)
+    Refine = 3,        // the coarse grid (low bits dropped) by the spanning tree, the
+                       // connectivity ranked on it, then the low bits predicted across
+                       // the decoded triangles (the encoder falls back to the spanning
+                       // tree where that is smaller)
 };
 
 const char* geometryCoderName(GeometryCoder g);
-// Parses "raw", "tree"; throws Error otherwise.
+// Parses "raw", "tree", "refine"; throws Error otherwise.
 GeometryCoder parseGeometryCoder(const std::string& name);
 
 const char* predictorName(Predictor p);
@@ -97,6 +101,10 @@ struct EncodeOptions {
     Predictor predictor = Predictor::Auto;
     bool curvature = false;                 // the paper's curvature correction
     GeometryCoder geometry = GeometryCoder::SpanningTree;
+    // With GeometryCoder::Refine: how many low bits the refinement codes
+    // (1..8, below `bits`); 0 lets the encoder try 1, 2, ... while the file
+    // shrinks, and the spanning tree alone, and keep the smallest.
+    int refineBits = 0;
     // Store the permutation back to the input vertex order (a fourth
     // section), so decoded vertices keep their input indices.
     bool keepVertexOrder = false;
@@ -121,6 +129,7 @@ struct Stats {
     bool curvature = false;
     Levers levers;
     GeometryCoder geometry = GeometryCoder::SpanningTree;
+    int refineBits = 0;             // low bits coded by the refinement (GeometryCoder::Refine)
     uint64_t headerBytes = 0;
     uint64_t connectivityBytes = 0;
     uint64_t geometryBytes = 0;

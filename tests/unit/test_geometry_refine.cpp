@@ -1,0 +1,132 @@
+// The refinement of geometry coder 3 on its own: every predictor and number
+// of low bits round-trips, on a regular grid, on random triangles with
+// repeated, degenerate and isolated vertices, and the payload reader refuses
+// out-of-range fields with a clear message.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+#include "drm/drm.h"
+#include "geometry_refine.h"
+
+namespace drm {
+namespace {
+
+// A (side x side) height field: smooth, so the predictors do something.
+void heightField(int side, std::vector<int32_t>& grid, std::vector<uint32_t>& triangles) {
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) grid.insert(grid.end(), {x * 37, y * 41, (x * x + 3 * y * y) % 4096});
+    for (int y = 0; y + 1 < side; ++y)
+        for (int x = 0; x + 1 < side; ++x) {
+            const uint32_t a = uint32_t(y * side + x), b = a + 1, c = a + uint32_t(side), d = c + 1;
+            triangles.insert(triangles.end(), {a, b, d, a, d, c});
+        }
+}
+
+void expectRoundTrip(const std::vector<int32_t>& fine, int lowBits, const std::vector<uint32_t>& triangles) {
+    const Refinement r = encodeRefinement(fine, lowBits, triangles);
+    const std::vector<uint8_t> tree = {1, 2, 3};
+    const std::vector<uint8_t> section = writeRefinePayload(lowBits, r, tree);
+    const RefinePayload payload = readRefinePayload(section.data(), section.size(), 12);
+    ASSERT_EQ(payload.lowBits, lowBits);
+    ASSERT_EQ(payload.predictor, r.predictor);
+    ASSERT_EQ(std::vector<uint8_t>(payload.tree, payload.tree + payload.treeSize), tree);
+    EXPECT_EQ(decodeRefinement(payload, coarsenGrid(fine, lowBits), triangles), fine);
+}
+
+TEST(GeometryRefine, HeightFieldAtEveryLowBitCount) {
+    std::vector<int32_t> grid;
+    std::vector<uint32_t> triangles;
+    heightField(20, grid, triangles);
+    for (int lowBits = 1; lowBits <= kMaxRefineBits; ++lowBits) expectRoundTrip(grid, lowBits, triangles);
+}
+
+TEST(GeometryRefine, EveryPredictorRoundTrips) {
+    std::vector<int32_t> grid;
+    std::vector<uint32_t> triangles;
+    heightField(12, grid, triangles);
+    const std::vector<int32_t> coarse = coarsenGrid(grid, 3);
+    // Force each predictor through the payload reader.
+    for (int p = 0; p < kRefinePredictors; ++p) {
+        Refinement best = encodeRefinement(grid, 3, triangles);
+        std::vector<uint8_t> section = writeRefinePayload(3, best, {});
+        section[1] = uint8_t(p);
+        const RefinePayload payload = readRefinePayload(section.data(), section.size(), 12);
+        if (RefinePredictor(p) == best.predictor) {
+            EXPECT_EQ(decodeRefinement(payload, coarse, triangles), grid);
+        } else {
+            // Another predictor decodes to something on the coarse cells, or
+            // runs out of bytes; never anything else.
+            try {
+                const std::vector<int32_t> other = decodeRefinement(payload, coarse, triangles);
+                for (size_t i = 0; i < other.size(); ++i) EXPECT_EQ(other[i] >> 3, coarse[i]);
+            } catch (const Error& e) {
+                EXPECT_NE(std::string(e.what()).find("corrupt file"), std::string::npos);
+            }
+        }
+    }
+}
+
+TEST(GeometryRefine, RandomTrianglesWithIsolatedAndCoincidentVertices) {
+    std::mt19937 rng(5);
+    for (int lowBits : {1, 2, 4, 6}) {
+        const size_t n = 400;
+        std::vector<int32_t> grid(3 * n);
+        for (int32_t& c : grid) c = int32_t(rng() % 4096);
+        for (size_t v = 0; v < 40; ++v)  // coincident pairs
+            for (int k = 0; k < 3; ++k) grid[3 * (v + 40) + k] = grid[3 * v + k];
+        std::vector<uint32_t> triangles;
+        for (int f = 0; f < 500; ++f) {
+            // vertices 300.. are in no triangle; some faces repeat a vertex
+            const uint32_t a = rng() % 300, b = rng() % 300, c = (f % 7 == 0) ? a : rng() % 300;
+            triangles.insert(triangles.end(), {a, b, c});
+        }
+        expectRoundTrip(grid, lowBits, triangles);
+    }
+}
+
+TEST(GeometryRefine, NoTrianglesAtAll) {
+    std::vector<int32_t> grid = {0, 0, 0, 4095, 4095, 4095, 17, 3000, 5};
+    expectRoundTrip(grid, 4, {});
+}
+
+void expectRefused(const std::vector<uint8_t>& section, int bits, const std::string& words) {
+    try {
+        readRefinePayload(section.data(), section.size(), bits);
+        FAIL() << "accepted a payload that should fail with: " << words;
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+}
+
+TEST(GeometryRefine, PayloadReaderRefusesBadFields) {
+    expectRefused({}, 12, "refinement bits");
+    expectRefused({0, 0, 0}, 12, "0 refinement bits");
+    expectRefused({9, 0, 0}, 12, "9 refinement bits");
+    expectRefused({4, 0, 0}, 4, "4 refinement bits at 4-bit");
+    expectRefused({2, 4, 0}, 12, "unknown refinement predictor 4");
+    expectRefused({2, 0}, 12, "coarse tree size");
+    expectRefused({2, 0, 5, 1, 2}, 12, "coarse tree size");
+}
+
+TEST(GeometryRefine, TruncatedRefinementFailsClearly) {
+    std::vector<int32_t> grid;
+    std::vector<uint32_t> triangles;
+    heightField(30, grid, triangles);
+    const Refinement r = encodeRefinement(grid, 5, triangles);
+    ASSERT_GT(r.bytes.size(), 20u);
+    Refinement cut = r;
+    cut.bytes.resize(r.bytes.size() / 2);
+    const std::vector<uint8_t> section = writeRefinePayload(5, cut, {});
+    const RefinePayload payload = readRefinePayload(section.data(), section.size(), 12);
+    try {
+        decodeRefinement(payload, coarsenGrid(grid, 5), triangles);
+        FAIL() << "a truncated refinement decoded";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("refinement section ends"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace drm
