@@ -1,7 +1,9 @@
 #include "geometry_tree.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <unordered_map>
 #include <string>
 
 #include <flann/flann.hpp>
@@ -16,9 +18,7 @@ namespace {
 
 constexpr uint32_t kNone = 0xFFFFFFFFu;
 constexpr int kNeighbours = 8;       // spanning tree over the 8-nearest-neighbour graph
-constexpr int kPredictors = 4;
-constexpr int kResidualClasses = 24; // bit lengths 0..23 (differences of 21-bit coordinates)
-constexpr int kClassContexts = 12;
+constexpr int kChoiceContexts = 4;  // predictor choice tables: by the previous choice, clamped
 constexpr uint32_t kDirectChildCounts = 8;  // 0..7, then an escape
 
 struct Point {
@@ -34,127 +34,321 @@ int bitLength(uint32_t m) {
 }
 
 // The shape of the depth-first walk, rebuilt from the child counts alone:
-// before each vertex it tells that vertex's parent and previous sibling (as
-// decoded indices), so encoder and decoder predict from the same vertices.
+// before each vertex it tells that vertex's parent (as a decoded index), so
+// encoder and decoder predict from the same vertices.
 class TreeWalk {
 public:
-    void enter(uint32_t self, uint32_t* parent, uint32_t* sibling) {
+    uint32_t enter() {
         while (!frames_.empty() && frames_.back().childrenLeft == 0) frames_.pop_back();
-        if (frames_.empty()) {
-            *parent = *sibling = kNone;
-            return;
-        }
-        Frame& f = frames_.back();
-        *parent = f.vertex;
-        *sibling = f.lastChild;
-        --f.childrenLeft;
-        f.lastChild = self;
+        if (frames_.empty()) return kNone;
+        --frames_.back().childrenLeft;
+        return frames_.back().vertex;
     }
     void expect(uint32_t self, uint32_t childCount) {
-        if (childCount > 0) frames_.push_back({self, childCount, kNone});
+        if (childCount > 0) frames_.push_back({self, childCount});
     }
 
 private:
     struct Frame {
-        uint32_t vertex, childrenLeft, lastChild;
+        uint32_t vertex, childrenLeft;
     };
     std::vector<Frame> frames_;
 };
 
-// The decoder-rebuildable predictions for vertex `next` (decoded index),
-// child of `parent`, after `sibling` (kNone if first).
-struct Predictions {
-    Point candidate[kPredictors];
+// An adaptive binary model: the probability of a 1 in 1/4096ths, mixed
+// from a fast and a slow estimate (the fast one follows local changes, the
+// slow one holds the long-run rate). Integer arithmetic only.
+class BitModel {
+public:
+    void encode(RangeEncoder& coder, int bit) {
+        const uint32_t p1 = probabilityOfOne();
+        if (bit) coder.encode(kOne - p1, p1, kOne);
+        else coder.encode(0, kOne - p1, kOne);
+        update(bit);
+    }
+    int decode(RangeDecoder& coder) {
+        const uint32_t p1 = probabilityOfOne();
+        const int bit = coder.decodeFreq(kOne) >= kOne - p1 ? 1 : 0;
+        if (bit) coder.consume(kOne - p1, p1, kOne);
+        else coder.consume(0, kOne - p1, kOne);
+        update(bit);
+        return bit;
+    }
+
+    // The encoder's estimate of the cost of coding `bit`, in bits.
+    double cost(int bit) const {
+        const uint32_t p1 = probabilityOfOne();
+        return costTable()[bit ? p1 : kOne - p1];
+    }
+
+private:
+    static const double* costTable() {
+        static const std::vector<double> table = [] {
+            std::vector<double> t(kOne + 1, 0.0);
+            for (uint32_t i = 1; i <= kOne; ++i) t[i] = -std::log2(double(i) / kOne);
+            return t;
+        }();
+        return table.data();
+    }
+    static constexpr uint32_t kOne = 1u << 12;
+    static constexpr int kFast = 4, kSlow = 7;
+    uint32_t probabilityOfOne() const {
+        const uint32_t p = (fast_ + slow_) >> 5;  // two 16-bit estimates to 12 bits
+        return std::min(std::max(p, 1u), kOne - 1);
+    }
+    void update(int bit) {
+        if (bit) {
+            fast_ += (65536 - fast_) >> kFast;
+            slow_ += (65536 - slow_) >> kSlow;
+        } else {
+            fast_ -= fast_ >> kFast;
+            slow_ -= slow_ >> kSlow;
+        }
+    }
+    uint32_t fast_ = 32768, slow_ = 32768;
 };
 
-Predictions predict(const std::vector<Point>& pos, const std::vector<uint32_t>& parentOf, uint32_t next,
-                    uint32_t parent, uint32_t sibling) {
+// Encoder and decoder run the same coding functions through one of these:
+// the writer codes the value it is given and returns it, the reader ignores
+// it and returns what it decodes. So both sides take every decision in the
+// same code.
+struct Writer {
+    RangeEncoder& coder;
+    static constexpr bool kEncoding = true;
+    int bit(BitModel& m, int b) { m.encode(coder, b); return b; }
+    uint32_t plain(uint32_t v, int count) { coder.encodeWideBits(v, count); return v & uint32_t((uint64_t(1) << count) - 1); }
+    uint32_t symbol(AdaptiveFrequencies& m, uint32_t s) { m.encode(coder, s); return s; }
+};
+struct Reader {
+    RangeDecoder& coder;
+    static constexpr bool kEncoding = false;
+    int bit(BitModel& m, int) { return m.decode(coder); }
+    uint32_t plain(uint32_t, int count) { return uint32_t(coder.decodeWideBits(count)); }
+    uint32_t symbol(AdaptiveFrequencies& m, uint32_t) { return m.decode(coder); }
+};
+
+uint32_t magnitudeOf(int32_t v) { return uint32_t(v < 0 ? -int64_t(v) : v); }
+
+constexpr int kMagnitudeContexts = 8;
+constexpr int kMaxLength = 23;      // bit lengths of residuals of 21-bit coordinates
+constexpr int kAdaptiveLowBits = 2; // bits below the leading one with a model
+
+// The models of one axis' residuals.
+struct AxisModels {
+    BitModel zero[kMagnitudeContexts];
+    BitModel longer[kMagnitudeContexts][kMaxLength];  // unary bit length: "longer than k"
+    BitModel sign;
+    BitModel low[kMaxLength][kAdaptiveLowBits];
+};
+
+// A residual: zero or not, the bit length n >= 1 in unary, the sign, then
+// the bits below the leading one (the first two adaptive, per n).
+template <class Io>
+int32_t codeResidual(Io& io, AxisModels& m, int context, int32_t r) {
+    const uint32_t magnitude = magnitudeOf(r);
+    if (io.bit(m.zero[context], magnitude == 0)) return 0;
+    const int n = bitLength(magnitude);
+    int length = 1;
+    while (length < kMaxLength && io.bit(m.longer[context][length], n > length)) ++length;
+    const bool negative = io.bit(m.sign, r < 0) != 0;
+    uint32_t value = 1;
+    for (int k = 0; k < std::min(length - 1, kAdaptiveLowBits); ++k)
+        value = (value << 1) | uint32_t(io.bit(m.low[length][k], (magnitude >> (length - 2 - k)) & 1));
+    const int rest = length - 1 - std::min(length - 1, kAdaptiveLowBits);
+    value = (value << rest) | io.plain(magnitude, rest);
+    return negative ? -int32_t(value) : int32_t(value);
+}
+
+// The encoder's estimate of codeResidual's cost, in bits.
+double residualBits(const AxisModels& m, int context, int32_t r) {
+    const uint32_t magnitude = magnitudeOf(r);
+    if (magnitude == 0) return m.zero[context].cost(1);
+    const int n = bitLength(magnitude);
+    double bits = m.zero[context].cost(0) + 1.0 + (n - 1);
+    for (int length = 1; length < kMaxLength && length <= n; ++length) bits += m.longer[context][length].cost(n > length);
+    return bits;
+}
+
+// The decoded points a prediction is built from are the kNearest decoded
+// vertices nearest the parent; the candidates are the parent itself, the
+// previous tree edge repeated from the parent, the reflections 2p - q of the
+// near points q through the parent, and the parallelograms p + q - w over
+// ordered pairs of them (on a surface sampled by near-regular triangles the
+// next vertex around p often lies there).
+constexpr int kNearest = 4;
+constexpr int kMaxCandidates = 2 + kNearest + kNearest * (kNearest - 1);
+struct Predictions {
+    Point candidate[kMaxCandidates];
+    int count = 0;
+    void add(Point c) { candidate[count++] = c; }
+};
+
+// The decoded vertices bucketed by cubic cells of side 2^cellBits, to find
+// those near a point. Each cell lists its vertices latest first.
+class DecodedCells {
+public:
+    explicit DecodedCells(int cellBits) : cellBits_(cellBits) {}
+    int cellBits() const { return cellBits_; }
+
+    void insert(uint32_t v, Point at) {
+        auto cell = head_.emplace(key(at.x, at.y, at.z), kNone).first;
+        if (next_.size() <= v) next_.resize(size_t(v) + 1, kNone);
+        next_[v] = cell->second;
+        cell->second = v;
+    }
+
+    // The up to kNearest decoded vertices nearest `at` (other than `self`)
+    // in the 2x2x2 block of cells around it (its own cell and, on each axis,
+    // the neighbour on its nearer side), nearest first; ties go to the later
+    // vertex. Returns how many.
+    int nearest(const std::vector<Point>& pos, uint32_t self, Point at, Point* near) const {
+        const int64_t side = int64_t(1) << cellBits_;
+        const int64_t half = side >> 1;
+        const int64_t step[3] = {(at.x & (side - 1)) < half ? -side : side, (at.y & (side - 1)) < half ? -side : side,
+                                 (at.z & (side - 1)) < half ? -side : side};
+        int64_t distance2[kNearest];
+        int count = 0;
+        for (int corner = 0; corner < 8; ++corner) {
+            const int64_t x = at.x + ((corner & 1) ? step[0] : 0), y = at.y + ((corner & 2) ? step[1] : 0),
+                          z = at.z + ((corner & 4) ? step[2] : 0);
+            if (x < 0 || y < 0 || z < 0 || x > kCoordinateMax || y > kCoordinateMax || z > kCoordinateMax) continue;
+            const auto cell = head_.find(key(int32_t(x), int32_t(y), int32_t(z)));
+            if (cell == head_.end()) continue;
+            for (uint32_t v = cell->second; v != kNone; v = next_[v]) {
+                if (v == self) continue;
+                const Point d = pos[v] - at;
+                const int64_t d2 = int64_t(d.x) * d.x + int64_t(d.y) * d.y + int64_t(d.z) * d.z;
+                if (count == kNearest && d2 >= distance2[count - 1]) continue;
+                int i = count < kNearest ? count++ : count - 1;  // insertion into the sorted list
+                for (; i > 0 && distance2[i - 1] > d2; --i) {
+                    distance2[i] = distance2[i - 1];
+                    near[i] = near[i - 1];
+                }
+                distance2[i] = d2;
+                near[i] = pos[v];
+            }
+        }
+        return count;
+    }
+
+private:
+    static constexpr int64_t kCoordinateMax = (int64_t(1) << 21) - 1;
+    uint64_t key(int32_t x, int32_t y, int32_t z) const {  // coordinates below 2^21: 21 bits each
+        return (uint64_t(uint32_t(x) >> cellBits_) << 42) | (uint64_t(uint32_t(y) >> cellBits_) << 21) |
+               uint64_t(uint32_t(z) >> cellBits_);
+    }
+    int cellBits_;
+    std::unordered_map<uint64_t, uint32_t> head_;  // cell -> its latest vertex
+    std::vector<uint32_t> next_;                   // vertex -> the one before it in its cell
+};
+
+// Everything both sides track while walking the tree.
+struct CodingState {
+    std::vector<Point> pos;            // decoded positions
+    std::vector<uint32_t> parentOf;    // decoded parent, kNone for roots
+    std::vector<uint32_t> magnitude;   // |residual| per axis, 3 per vertex
+    DecodedCells cells;
+    AxisModels axis[3];
+    std::vector<AdaptiveFrequencies> predictorChoice;  // [previous choice, clamped]
+    AdaptiveFrequencies childCount;
+    uint32_t previousChoice = 0;
+
+    explicit CodingState(int cellBits)
+        : cells(cellBits),
+          predictorChoice(kChoiceContexts, AdaptiveFrequencies(std::vector<uint16_t>(kMaxCandidates, 1))),
+          childCount(std::vector<uint16_t>(kDirectChildCounts + 1, 1)) {}
+
+    // Starts vertex `self` (the next decoded index): its parent is known,
+    // its residuals not yet.
+    void begin(uint32_t parent) {
+        parentOf.push_back(parent);
+        magnitude.insert(magnitude.end(), 3, 0);
+    }
+    void place(uint32_t self, Point at) {
+        pos.push_back(at);
+        cells.insert(self, at);
+    }
+};
+
+// The expected size of this vertex's residual on an axis, from residuals
+// already coded nearby: the parent's and the previous vertex's.
+int magnitudeContext(const CodingState& s, uint32_t self, uint32_t parent, int axis) {
+    const uint32_t previous = s.magnitude[3 * size_t(self - 1) + size_t(axis)];
+    const uint32_t ofParent = s.magnitude[3 * size_t(parent) + size_t(axis)];
+    return std::min(bitLength(uint32_t((uint64_t(previous) + ofParent + 1) / 2)), kMagnitudeContexts - 1);
+}
+
+Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     Predictions p;
-    const Point at = pos[parent];
-    for (Point& c : p.candidate) c = at;
-    const uint32_t grandparent = parentOf[parent];
-    if (grandparent != kNone) p.candidate[1] = at + (at - pos[grandparent]);  // keep going straight
-    if (sibling != kNone) p.candidate[2] = at + (at - pos[sibling]);          // opposite the previous sibling
-    const uint32_t previous = next - 1;  // repeat the previous tree edge (regular samplings)
-    if (parentOf[previous] != kNone) p.candidate[3] = at + (pos[previous] - pos[parentOf[previous]]);
+    const Point at = s.pos[parent];
+    p.add(at);
+    const uint32_t previous = self - 1;  // repeat the previous tree edge (regular samplings)
+    p.add(s.parentOf[previous] != kNone ? at + (s.pos[previous] - s.pos[s.parentOf[previous]]) : at);
+    Point near[kNearest];
+    const int m = s.cells.nearest(s.pos, parent, at, near);
+    for (int i = 0; i < m; ++i) p.add(at + (at - near[i]));
+    for (int i = 0; i < m; ++i)
+        for (int j = 0; j < m; ++j)
+            if (i != j) p.add(at + (near[i] - near[j]));
     return p;
 }
 
-// The models shared by both sides.
-struct GeometryModels {
-    std::vector<AdaptiveFrequencies> residualClass;  // [axis][class context]
-    std::vector<AdaptiveFrequencies> topBit;         // [axis][bit length]: the bit below the leading one
-    std::vector<AdaptiveFrequencies> predictorChoice;  // [previous choice]
-    AdaptiveFrequencies childCount;
-    int previousClass[3] = {0, 0, 0};
-    uint32_t previousChoice = 0;
-
-    GeometryModels()
-        : residualClass(3 * kClassContexts, AdaptiveFrequencies(std::vector<uint16_t>(kResidualClasses, 1))),
-          topBit(3 * kResidualClasses, AdaptiveFrequencies(std::vector<uint16_t>(2, 1))),
-          predictorChoice(kPredictors, AdaptiveFrequencies(std::vector<uint16_t>(kPredictors, 1))),
-          childCount(std::vector<uint16_t>(kDirectChildCounts + 1, 1)) {}
-
-    AdaptiveFrequencies& choiceModel() { return predictorChoice[previousChoice]; }
-
-    AdaptiveFrequencies& classModel(int axis) {
-        return residualClass[size_t(axis * kClassContexts + std::min(previousClass[axis], kClassContexts - 1))];
+// Codes (or decodes) vertex `self`, a child of `parent`; `actual` is its
+// position when encoding. Returns the position.
+// The encoder's pick: the candidate whose residual and choice cost least
+// under the current models. (Floating point is fine here: the choice is
+// transmitted, the decoder never repeats this.)
+uint32_t bestPrediction(const CodingState& s, const Predictions& p, const AdaptiveFrequencies& choiceModel,
+                        const int* contexts, Point actual) {
+    uint32_t best = 0;
+    double bestCost = 1e300;
+    const double total = choiceModel.totalCount();
+    for (uint32_t c = 0; c < uint32_t(p.count); ++c) {
+        const Point r = actual - p.candidate[c];
+        const double cost = residualBits(s.axis[0], contexts[0], r.x) + residualBits(s.axis[1], contexts[1], r.y) +
+                            residualBits(s.axis[2], contexts[2], r.z) + std::log2(total / choiceModel.countOf(c));
+        if (cost < bestCost) {
+            bestCost = cost;
+            best = c;
+        }
     }
-};
-
-// Exp-Golomb-like: the bit length of |r| as an adaptive symbol, then the sign
-// and the bits below the leading one as plain bits.
-void encodeResidual(RangeEncoder& coder, GeometryModels& models, int axis, int32_t r) {
-    const uint32_t magnitude = uint32_t(r < 0 ? -int64_t(r) : r);
-    const int n = bitLength(magnitude);
-    models.classModel(axis).encode(coder, uint32_t(n));
-    models.previousClass[axis] = n;
-    if (n == 0) return;
-    coder.encodeBits(r < 0 ? 1 : 0, 1);
-    if (n == 1) return;
-    // Residuals are peaked: within a bit length the smaller half is likelier.
-    models.topBit[size_t(axis * kResidualClasses + n)].encode(coder, (magnitude >> (n - 2)) & 1);
-    coder.encodeWideBits(magnitude, n - 2);
+    return best;
 }
 
-int32_t decodeResidual(RangeDecoder& coder, GeometryModels& models, int axis) {
-    const int n = int(models.classModel(axis).decode(coder));
-    models.previousClass[axis] = n;
-    if (n == 0) return 0;
-    const bool negative = coder.decodeBits(1) != 0;
-    uint32_t magnitude = 1;
-    if (n > 1) {
-        const uint32_t top = models.topBit[size_t(axis * kResidualClasses + n)].decode(coder);
-        magnitude = (((uint32_t(1) << 1) | top) << (n - 2)) | uint32_t(coder.decodeWideBits(n - 2));
+template <class Io>
+Point codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, Point actual) {
+    const Predictions p = predict(s, self, parent);
+    AdaptiveFrequencies& choiceModel = s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
+    int contexts[3];
+    for (int a = 0; a < 3; ++a) contexts[a] = magnitudeContext(s, self, parent, a);
+    const uint32_t best = Io::kEncoding ? bestPrediction(s, p, choiceModel, contexts, actual) : 0;
+    const uint32_t choice = io.symbol(choiceModel, best);
+    if (choice >= uint32_t(p.count)) throw Error("corrupt file: a geometry predictor choice is out of range");
+    s.previousChoice = choice;
+    const Point base = p.candidate[choice];
+    const Point r = actual - base;
+    int32_t out[3];
+    const int32_t in[3] = {r.x, r.y, r.z};
+    for (int a = 0; a < 3; ++a) {
+        out[a] = codeResidual(io, s.axis[a], contexts[a], in[a]);
+        s.magnitude[3 * size_t(self) + size_t(a)] = magnitudeOf(out[a]);
     }
-    return negative ? -int32_t(magnitude) : int32_t(magnitude);
+    return {int32_t(int64_t(base.x) + out[0]), int32_t(int64_t(base.y) + out[1]), int32_t(int64_t(base.z) + out[2])};
 }
 
-void encodeChildCount(RangeEncoder& coder, GeometryModels& models, uint32_t count) {
-    if (count < kDirectChildCounts) {
-        models.childCount.encode(coder, count);
-        return;
-    }
-    models.childCount.encode(coder, kDirectChildCounts);
-    // Elias gamma of w >= 1: n - 1 zero bits, a one bit, then the n - 1 bits
-    // below the leading one. Each piece is coded exactly as the decoder reads
-    // it (one bit at a time, then one chunk): in a range coder a 4-bit value
-    // and four single bits are different codes.
-    const uint32_t w = count - kDirectChildCounts + 1;
-    const int n = bitLength(w);
-    for (int zero = 0; zero < n - 1; ++zero) coder.encodeBits(0, 1);
-    coder.encodeBits(1, 1);
-    coder.encodeWideBits(w, n - 1);
-}
-
-uint32_t decodeChildCount(RangeDecoder& coder, GeometryModels& models) {
-    const uint32_t symbol = models.childCount.decode(coder);
+template <class Io>
+uint32_t codeChildCount(Io& io, CodingState& s, uint32_t count) {
+    const uint32_t symbol = io.symbol(s.childCount, std::min(count, kDirectChildCounts));
     if (symbol < kDirectChildCounts) return symbol;
+    // Elias gamma of w >= 1: n - 1 zero bits, a one bit, then the n - 1 bits
+    // below the leading one.
+    const uint32_t w = Io::kEncoding ? count - kDirectChildCounts + 1 : 0;
+    const int n = bitLength(w);
     int zeros = 0;
-    while (coder.decodeBits(1) == 0)
+    while (io.plain(zeros < n - 1 ? 0 : 1, 1) == 0)
         if (++zeros > 31) throw Error("corrupt file: a child count in the geometry section is too long");
-    const uint64_t w = (uint64_t(1) << zeros) | coder.decodeWideBits(zeros);
-    return uint32_t(std::min<uint64_t>(w - 1 + kDirectChildCounts, 0xFFFFFFFFu));
+    const uint64_t decoded = (uint64_t(1) << zeros) | io.plain(w, zeros);
+    return uint32_t(std::min<uint64_t>(decoded - 1 + kDirectChildCounts, 0xFFFFFFFFu));
 }
 
 uint64_t residualCost(Point r) {  // Exp-Golomb length, to pick the predictor
@@ -180,9 +374,10 @@ struct UnionFind {
 
 // Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
 // children nearest first.
-std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid) {
+std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, double* spacing) {
     const size_t n = grid.size() / 3;
     std::vector<std::vector<uint32_t>> children(n);
+    *spacing = 1;
     if (n < 2) return children;
     const int k = int(std::min<size_t>(kNeighbours + 1, n));  // the query point finds itself too
     std::vector<float> points(grid.begin(), grid.end());
@@ -195,6 +390,14 @@ std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& gr
     flann::Matrix<float> distanceMatrix(distances.data(), n, size_t(k));
     tree.knnSearch(data, indexMatrix, distanceMatrix, size_t(k), flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED));
 
+    {
+        // The typical distance to the kNearest-th nearest neighbour: it sizes the cells of the near-point search.
+        const int j = std::min(kNearest, k - 1);
+        std::vector<float> d(n);
+        for (size_t v = 0; v < n; ++v) d[v] = distances[v * size_t(k) + size_t(j)];
+        std::nth_element(d.begin(), d.begin() + n / 2, d.end());
+        *spacing = std::sqrt(double(d[n / 2]));
+    }
     struct Edge {
         int64_t length2;
         uint32_t a, b;
@@ -292,46 +495,41 @@ std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& childre
 
 }  // namespace
 
+// The side of the cells the coders search for near points: about three
+// times the typical distance to the kNearest-th neighbour, as a power of two
+// (the search covers at least half a cell around the parent).
+int cellBitsFor(double spacing, int bits) { return std::min(bits, bitLength(uint32_t(std::min(3 * spacing, 1e9)))); }
+constexpr int kCellBitsWidth = 5;
+
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits) {
-    std::vector<std::vector<uint32_t>> children = spanningForest(grid);
+    double spacing = 1;
+    std::vector<std::vector<uint32_t>> children = spanningForest(grid, &spacing);
     orderChildrenForPrediction(grid, children);
     GeometryEncoding result;
     result.order = preorder(children);
     const size_t n = result.order.size();
 
-    std::vector<Point> pos(n);
-    std::vector<uint32_t> parentOf(n, kNone);
     RangeEncoder coder;
-    GeometryModels models;
+    Writer io{coder};
+    const int cellBits = cellBitsFor(spacing, bits);
+    coder.encodeBits(uint32_t(cellBits), kCellBitsWidth);
+    CodingState s(cellBits);
+    s.pos.reserve(n);
+    s.parentOf.reserve(n);
+    s.magnitude.reserve(3 * n);
     TreeWalk walk;
     for (uint32_t self = 0; self < n; ++self) {
         const uint32_t vertex = result.order[self];
         const Point at = pointOf(grid, vertex);
-        uint32_t parent = kNone, sibling = kNone;
-        walk.enter(self, &parent, &sibling);
-        parentOf[self] = parent;
+        const uint32_t parent = walk.enter();
+        s.begin(parent);
         if (parent == kNone) {
             for (int32_t c : {at.x, at.y, at.z}) coder.encodeWideBits(uint32_t(c), bits);
         } else {
-            const Predictions p = predict(pos, parentOf, self, parent, sibling);
-            int best = 0;
-            uint64_t bestCost = residualCost(at - p.candidate[0]);
-            for (int c = 1; c < kPredictors; ++c) {
-                const uint64_t cost = residualCost(at - p.candidate[c]);
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    best = c;
-                }
-            }
-            models.choiceModel().encode(coder, uint32_t(best));
-            models.previousChoice = uint32_t(best);
-            const Point r = at - p.candidate[best];
-            encodeResidual(coder, models, 0, r.x);
-            encodeResidual(coder, models, 1, r.y);
-            encodeResidual(coder, models, 2, r.z);
+            codeChild(io, s, self, parent, at);
         }
-        pos[self] = at;
-        encodeChildCount(coder, models, uint32_t(children[vertex].size()));
+        s.place(self, at);
+        codeChildCount(io, s, uint32_t(children[vertex].size()));
         walk.expect(self, uint32_t(children[vertex].size()));
     }
     result.bytes = coder.finish();
@@ -339,33 +537,35 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits) 
 }
 
 std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
-    // Every vertex but a root codes five adaptive symbols (a predictor choice,
-    // three residual lengths, a child count). A table of k symbols never gives
-    // one a probability above 1 - (k-1)/65568, so these cost at least 0.00176
-    // bits per vertex together: at most ~4550 vertices per byte. A count far
-    // beyond that is refused before anything is allocated. (Coincident
-    // vertices really do code this densely: fandisk at 1 bit is 118 per byte.)
+    // Every vertex but a root codes at least five adaptive decisions (a
+    // predictor choice, three residual zero flags, a child count). No
+    // binary model gives a decision a probability above 4095/4096, and a
+    // table of k symbols none above 1 - (k-1)/65568, so a vertex costs at
+    // least ~0.0017 bits: at most ~4700 vertices per byte. A count far
+    // beyond that is refused before anything is allocated.
     constexpr uint64_t kMaxVerticesPerByte = 8192;
     if (vertexCount > (uint64_t(size) + 8) * kMaxVerticesPerByte)
         throw Error("corrupt file: " + std::to_string(vertexCount) + " vertices cannot fit in a geometry section of " +
                     std::to_string(size) + " bytes");
     const size_t n = size_t(vertexCount);
     const int32_t top = gridMax(bits);
+    RangeDecoder coder(data, size);
+    Reader io{coder};
+    const int cellBits = int(coder.decodeBits(kCellBitsWidth));
+    if (cellBits > bits) throw Error("corrupt file: the geometry section's cell size is larger than the grid");
     // The count is only a claim until the stream delivers the vertices:
     // tables grow as they are decoded, so a short or garbage section fails
     // before memory is committed to it.
-    std::vector<Point> pos;
-    std::vector<uint32_t> parentOf;
-    pos.reserve(std::min<size_t>(n, size_t(1) << 16));
-    parentOf.reserve(pos.capacity());
-    RangeDecoder coder(data, size);
-    GeometryModels models;
+    CodingState s(cellBits);
+    const size_t initial = std::min<size_t>(n, size_t(1) << 16);
+    s.pos.reserve(initial);
+    s.parentOf.reserve(initial);
+    s.magnitude.reserve(3 * initial);
     TreeWalk walk;
     uint64_t promised = 0;  // children announced but not yet decoded
     for (uint32_t self = 0; self < n; ++self) {
-        uint32_t parent = kNone, sibling = kNone;
-        walk.enter(self, &parent, &sibling);
-        parentOf.push_back(parent);
+        const uint32_t parent = walk.enter();
+        s.begin(parent);
         Point at;
         if (parent == kNone) {
             if (promised != 0) throw Error("corrupt file: the geometry tree is inconsistent");
@@ -375,20 +575,12 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
             at = {x, y, z};
         } else {
             --promised;
-            const uint32_t choice = models.choiceModel().decode(coder);
-            models.previousChoice = choice;
-            const Predictions p = predict(pos, parentOf, self, parent, sibling);
-            const Point base = p.candidate[choice];
-            const int32_t rx = decodeResidual(coder, models, 0);
-            const int32_t ry = decodeResidual(coder, models, 1);
-            const int32_t rz = decodeResidual(coder, models, 2);
-            const int64_t x = int64_t(base.x) + rx, y = int64_t(base.y) + ry, z = int64_t(base.z) + rz;
-            if (x < 0 || y < 0 || z < 0 || x > top || y > top || z > top)
+            at = codeChild(io, s, self, parent, Point{});
+            if (at.x < 0 || at.y < 0 || at.z < 0 || at.x > top || at.y > top || at.z > top)
                 throw Error("corrupt file: geometry vertex " + std::to_string(self) + " falls outside the grid");
-            at = {int32_t(x), int32_t(y), int32_t(z)};
         }
-        pos.push_back(at);
-        const uint32_t childCount = decodeChildCount(coder, models);
+        s.place(self, at);
+        const uint32_t childCount = codeChildCount(io, s, 0);
         promised += childCount;
         if (promised > n - 1 - self)
             throw Error("corrupt file: geometry vertex " + std::to_string(self) + " announces more children than remain");
@@ -398,9 +590,9 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     if (promised != 0) throw Error("corrupt file: the geometry section ends inside the tree");
     std::vector<int32_t> grid(3 * n);
     for (size_t v = 0; v < n; ++v) {
-        grid[3 * v] = pos[v].x;
-        grid[3 * v + 1] = pos[v].y;
-        grid[3 * v + 2] = pos[v].z;
+        grid[3 * v] = s.pos[v].x;
+        grid[3 * v + 1] = s.pos[v].y;
+        grid[3 * v + 2] = s.pos[v].z;
     }
     return grid;
 }

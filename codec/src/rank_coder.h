@@ -31,6 +31,10 @@ public:
     uint32_t decode(RangeDecoder& coder);
     // Counts symbol without coding it (for tables that only teach others).
     void observe(uint32_t symbol) { update(symbol); }
+    // For an encoder estimating costs: count(s) / totalCount() is the
+    // probability the table gives symbol s.
+    uint32_t countOf(uint32_t s) const { return counts_[s]; }
+    uint32_t totalCount() const { return total_; }
     // Restarts from parent's proportions, scaled to a total of about
     // `mass` (every count at least 1): a young context starts from what the
     // whole stream has shown so far instead of from a flat prior.
