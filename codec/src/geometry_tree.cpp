@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <unordered_map>
 #include <string>
 
 #include <flann/flann.hpp>
@@ -183,6 +182,54 @@ struct Predictions {
     void add(Point c) { candidate[count++] = c; }
 };
 
+// Cell key -> the cell's latest vertex: open addressing with linear
+// probing, grown as cells appear (a decoder's table grows with what it has
+// decoded, never with what a header claims). Much cheaper than a node-based
+// map on the decoder's path.
+class CellHeads {
+public:
+    // The head of cell `key`, inserted as kNone if absent.
+    uint32_t& at(uint64_t key) {
+        if (2 * (used_ + 1) > keys_.size()) grow();
+        size_t slot = find(key);
+        if (keys_[slot] == kEmpty) {
+            keys_[slot] = key;
+            heads_[slot] = kNone;
+            ++used_;
+        }
+        return heads_[slot];
+    }
+    uint32_t get(uint64_t key) const {
+        if (keys_.empty()) return kNone;
+        const size_t slot = find(key);
+        return keys_[slot] == key ? heads_[slot] : kNone;
+    }
+
+private:
+    static constexpr uint64_t kEmpty = ~uint64_t(0);  // keys use 63 bits
+    size_t find(uint64_t key) const {
+        const size_t mask = keys_.size() - 1;
+        size_t slot = size_t((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+        while (keys_[slot] != kEmpty && keys_[slot] != key) slot = (slot + 1) & mask;
+        return slot;
+    }
+    void grow() {
+        std::vector<uint64_t> keys(std::max<size_t>(64, 2 * keys_.size()), kEmpty);
+        std::vector<uint32_t> heads(keys.size(), kNone);
+        keys.swap(keys_);
+        heads.swap(heads_);
+        for (size_t i = 0; i < keys.size(); ++i)
+            if (keys[i] != kEmpty) {
+                const size_t slot = find(keys[i]);
+                keys_[slot] = keys[i];
+                heads_[slot] = heads[i];
+            }
+    }
+    std::vector<uint64_t> keys_;
+    std::vector<uint32_t> heads_;
+    size_t used_ = 0;
+};
+
 // The decoded vertices bucketed by cubic cells of side 2^cellBits, to find
 // those near a point. Each cell lists its vertices latest first.
 class DecodedCells {
@@ -191,10 +238,10 @@ public:
     int cellBits() const { return cellBits_; }
 
     void insert(uint32_t v, Point at) {
-        auto cell = head_.emplace(key(at.x, at.y, at.z), kNone).first;
+        uint32_t& head = head_.at(key(at.x, at.y, at.z));
         if (next_.size() <= v) next_.resize(size_t(v) + 1, kNone);
-        next_[v] = cell->second;
-        cell->second = v;
+        next_[v] = head;
+        head = v;
     }
 
     // The up to kNearest decoded vertices nearest `at` (other than `self`)
@@ -212,9 +259,7 @@ public:
             const int64_t x = at.x + ((corner & 1) ? step[0] : 0), y = at.y + ((corner & 2) ? step[1] : 0),
                           z = at.z + ((corner & 4) ? step[2] : 0);
             if (x < 0 || y < 0 || z < 0 || x > kCoordinateMax || y > kCoordinateMax || z > kCoordinateMax) continue;
-            const auto cell = head_.find(key(int32_t(x), int32_t(y), int32_t(z)));
-            if (cell == head_.end()) continue;
-            for (uint32_t v = cell->second; v != kNone; v = next_[v]) {
+            for (uint32_t v = head_.get(key(int32_t(x), int32_t(y), int32_t(z))); v != kNone; v = next_[v]) {
                 if (v == self) continue;
                 const Point d = pos[v] - at;
                 const int64_t d2 = int64_t(d.x) * d.x + int64_t(d.y) * d.y + int64_t(d.z) * d.z;
@@ -238,7 +283,7 @@ private:
                uint64_t(uint32_t(z) >> cellBits_);
     }
     int cellBits_;
-    std::unordered_map<uint64_t, uint32_t> head_;  // cell -> its latest vertex
+    CellHeads head_;                               // cell -> its latest vertex
     std::vector<uint32_t> next_;                   // vertex -> the one before it in its cell
 };
 
