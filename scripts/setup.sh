@@ -10,7 +10,7 @@ meshlab_dir="$here/third_party/meshlab-$meshlab_src_version"
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libflann-dev liblz4-dev libgtest-dev libeigen3-dev
+  libgtest-dev libeigen3-dev
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev
   xvfb xauth dpkg-dev imagemagick xdotool x11-apps
   clang libfuzzer-14-dev libclang-rt-14-dev

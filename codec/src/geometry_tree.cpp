@@ -5,12 +5,12 @@
 #include <numeric>
 #include <string>
 
-#include <flann/flann.hpp>
 
 #include "drm/drm.h"
 #include "quantize.h"
 #include "range_coder.h"
 #include "rank_coder.h"
+#include "vertex_index.h"
 
 namespace drm {
 namespace {
@@ -424,24 +424,31 @@ std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& gr
     std::vector<std::vector<uint32_t>> children(n);
     *spacing = 1;
     if (n < 2) return children;
-    const int k = int(std::min<size_t>(kNeighbours + 1, n));  // the query point finds itself too
-    std::vector<float> points(grid.begin(), grid.end());
-    flann::Matrix<float> data(points.data(), n, 3);
-    flann::KDTreeSingleIndex<flann::L2_Simple<float>> tree(data, flann::KDTreeSingleIndexParams(8));
-    tree.buildIndex();
-    std::vector<size_t> indices(n * size_t(k));
-    std::vector<float> distances(n * size_t(k));
-    flann::Matrix<size_t> indexMatrix(indices.data(), n, size_t(k));
-    flann::Matrix<float> distanceMatrix(distances.data(), n, size_t(k));
-    tree.knnSearch(data, indexMatrix, distanceMatrix, size_t(k), flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED));
-
+    // The kNeighbours nearest of every vertex, exactly, on the integer grid.
+    const VertexIndex index(grid);
+    std::vector<uint32_t> neighbours(n * size_t(kNeighbours), kNone);
+    std::vector<int64_t> fourth(n, 0);  // squared distance to the kNearest-th nearest, fixed point
+    {
+        std::vector<std::pair<int64_t, uint32_t>> found;
+        std::vector<uint32_t> scratch;
+        for (size_t v = 0; v < n; ++v) {
+            const FixedPoint p{int64_t(grid[3 * v]) * kSubUnits, int64_t(grid[3 * v + 1]) * kSubUnits,
+                               int64_t(grid[3 * v + 2]) * kSubUnits};
+            auto distance2 = [&](uint32_t w) {
+                const int64_t dx = int64_t(grid[3 * size_t(w)]) * kSubUnits - p.x;
+                const int64_t dy = int64_t(grid[3 * size_t(w) + 1]) * kSubUnits - p.y;
+                const int64_t dz = int64_t(grid[3 * size_t(w) + 2]) * kSubUnits - p.z;
+                return dx * dx + dy * dy + dz * dz;
+            };
+            index.nearestFew(p, kNeighbours, distance2, [v](uint32_t w) { return w != v; }, found, scratch);
+            for (size_t j = 0; j < found.size(); ++j) neighbours[v * kNeighbours + j] = found[j].second;
+            if (!found.empty()) fourth[v] = found[std::min<size_t>(kNearest, found.size()) - 1].first;
+        }
+    }
     {
         // The typical distance to the kNearest-th nearest neighbour: it sizes the cells of the near-point search.
-        const int j = std::min(kNearest, k - 1);
-        std::vector<float> d(n);
-        for (size_t v = 0; v < n; ++v) d[v] = distances[v * size_t(k) + size_t(j)];
-        std::nth_element(d.begin(), d.begin() + n / 2, d.end());
-        *spacing = std::sqrt(double(d[n / 2]));
+        std::nth_element(fourth.begin(), fourth.begin() + n / 2, fourth.end());
+        *spacing = std::sqrt(double(fourth[n / 2])) / double(kSubUnits);
     }
     struct Edge {
         int64_t length2;
@@ -456,11 +463,16 @@ std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& gr
         return s;
     };
     std::vector<Edge> edges;
-    edges.reserve(n * size_t(k));
+    edges.reserve(n * size_t(kNeighbours));
     for (size_t v = 0; v < n; ++v)
-        for (int j = 0; j < k; ++j) {
-            const uint32_t w = uint32_t(indices[v * size_t(k) + size_t(j)]);
-            if (w < n && w != v) edges.push_back({length2(uint32_t(v), w), uint32_t(std::min<size_t>(v, w)), uint32_t(std::max<size_t>(v, w))});
+        for (int j = 0; j < kNeighbours; ++j) {
+            const uint32_t w = neighbours[v * kNeighbours + size_t(j)];
+            if (w == kNone) continue;
+            // Mutual neighbours give the same edge twice: keep it once (the
+            // sort below is most of the tree's cost).
+            const uint32_t* theirs = neighbours.data() + size_t(w) * kNeighbours;
+            if (w < v && std::find(theirs, theirs + kNeighbours, uint32_t(v)) != theirs + kNeighbours) continue;
+            edges.push_back({length2(uint32_t(v), w), uint32_t(std::min<size_t>(v, w)), uint32_t(std::max<size_t>(v, w))});
         }
     std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
         return x.length2 != y.length2 ? x.length2 < y.length2 : (x.a != y.a ? x.a < y.a : x.b < y.b);

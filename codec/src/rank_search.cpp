@@ -77,36 +77,12 @@ const std::vector<RankedVertex>& RankSearch::nearest(const FixedPoint& p, size_t
     ranked_.clear();
     if (count == 0) return ranked_;
     if (count > kFewNearest) return manyNearest(p, count, edge, skip);
-    // The few nearest so far, in rank order; once there are `count`, cells
-    // and vertices farther than the last of them are skipped, and the
-    // admissibility test (edge look-ups) is asked only of vertices that
-    // would enter the list.
-    int64_t bound = INT64_MAX;
-    auto visit = [&](const uint32_t* first, size_t n) {
-        for (size_t i = 0; i < n; ++i) {
-            const uint32_t v = first[i];
-            if (v == skip) continue;
-            const RankedVertex c{distance2(p, v), v};
-            if (c.first > bound || (ranked_.size() == count && !(c < ranked_.back()))) continue;
-            if (!admissible_(v, edge)) continue;
-            ranked_.insert(std::upper_bound(ranked_.begin(), ranked_.end(), c), c);
-            if (ranked_.size() > count) ranked_.pop_back();
-            if (ranked_.size() == count) bound = ranked_.back().first;
-        }
-    };
-    for (int ring = index_.firstRing(p);; ++ring) {
-        if (!index_.ringIsCheap(ring)) {  // far from everything left: look at everything
-            ranked_.clear();
-            bound = INT64_MAX;
-            nearby_.clear();
-            index_.collectAll(nearby_);
-            visit(nearby_.data(), nearby_.size());
-            return ranked_;
-        }
-        index_.forEachCellOfRing(p, ring, bound, visit);
-        if (index_.ringsCoverGrid(p, ring)) return ranked_;
-        if (ranked_.size() == count && index_.clearance2(p, ring) > bound) return ranked_;
-    }
+    // Admissibility costs edge look-ups: it is asked only of vertices that
+    // would enter the answer.
+    index_.nearestFew(
+        p, count, [&](uint32_t v) { return distance2(p, v); },
+        [&](uint32_t v) { return v != skip && admissible_(v, edge); }, ranked_, nearby_);
+    return ranked_;
 }
 
 // For long rank lists (a decoder asked for a far rank): everything in the

@@ -57,6 +57,16 @@ public:
 
     int cellShift() const { return shift_; }
 
+    // The `count` present vertices nearest p that accept(v) takes, as
+    // (distance2(v), v) pairs in increasing order, exactly (ties by index):
+    // rings of cells outwards until nothing outside them can come nearer.
+    // distance2(v) is v's squared fixed-point distance from p; accept is
+    // asked only of vertices that would enter the answer. Meant for a few
+    // (each entry is an insertion into a sorted list).
+    template <class Distance, class Accept>
+    void nearestFew(const FixedPoint& p, size_t count, Distance distance2, Accept accept,
+                    std::vector<std::pair<int64_t, uint32_t>>& out, std::vector<uint32_t>& scratch) const;
+
 private:
     struct CellCoord {
         int64_t x, y, z;
@@ -125,6 +135,39 @@ void VertexIndex::forEachCellOfRing(const FixedPoint& p, int ring, int64_t bound
             const bool side = x == c.x - r || x == c.x + r || y == c.y - r || y == c.y + r;
             forEachCellOfColumn(local, x, y, c.z - r, c.z + r, !side, bound2, visit);
         }
+}
+
+template <class Distance, class Accept>
+void VertexIndex::nearestFew(const FixedPoint& p, size_t count, Distance distance2, Accept accept,
+                             std::vector<std::pair<int64_t, uint32_t>>& out, std::vector<uint32_t>& scratch) const {
+    out.clear();
+    if (count == 0) return;
+    // Once there are `count`, cells and vertices farther than the last are
+    // skipped.
+    int64_t bound = INT64_MAX;
+    auto visit = [&](const uint32_t* first, size_t n) {
+        for (size_t i = 0; i < n; ++i) {
+            const std::pair<int64_t, uint32_t> c{distance2(first[i]), first[i]};
+            if (c.first > bound || (out.size() == count && !(c < out.back()))) continue;
+            if (!accept(c.second)) continue;
+            out.insert(std::upper_bound(out.begin(), out.end(), c), c);
+            if (out.size() > count) out.pop_back();
+            if (out.size() == count) bound = out.back().first;
+        }
+    };
+    for (int ring = firstRing(p);; ++ring) {
+        if (!ringIsCheap(ring)) {  // far from everything left: look at everything
+            out.clear();
+            bound = INT64_MAX;
+            scratch.clear();
+            collectAll(scratch);
+            visit(scratch.data(), scratch.size());
+            return;
+        }
+        forEachCellOfRing(p, ring, bound, visit);
+        if (ringsCoverGrid(p, ring)) return;
+        if (out.size() == count && clearance2(p, ring) > bound) return;
+    }
 }
 
 }  // namespace drm
