@@ -141,6 +141,10 @@ bench)
     grep -q 'nefertiti.ply .* ok$' out.txt || fail "bench table: $(cat out.txt)"
     [ "$(wc -l <b.csv)" -eq 3 ] || fail "bench CSV: $(cat b.csv)"
     grep -q '^mesh,vertices,triangles,' b.csv || fail "bench CSV header: $(head -1 b.csv)"
+    # Peak memory per mesh (Linux /proc): a positive number of MiB, encode and decode.
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+             !($col["encode_peak_mib"] > 0 && $col["decode_peak_mib"] > 0) { bad = 1 }
+             END { exit bad || !col["encode_peak_mib"] }' b.csv || fail "bench CSV peak memory: $(cat b.csv)"
     grep -q '^| nefertiti.ply | 299 | 562 |' b.md || fail "bench Markdown: $(cat b.md)"
     grep -q '| 1.66 |' b.md || fail "bench Markdown lacks the paper's nefertiti rate: $(cat b.md)"
     # A failing mesh gets its row, the others are still measured, exit code 1.
