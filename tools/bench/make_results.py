@@ -63,7 +63,32 @@ def read_rows(path):
 PLOTS_HEADING = "## Against the codecs people use (plots)"
 
 
-def plots_section():
+def time_trend(data_dir):
+    """A sentence: median µs per triangle on the corpus against the largest subdivided mesh, drm and Draco."""
+    corpus = read_rows(os.path.join(data_dir, "peers.csv"))
+    big = read_rows(os.path.join(data_dir, "peers-big.csv"))
+    if not corpus or not big:
+        return ""
+    largest = max((r for r in big if r["status"] == "ok"), key=lambda r: int(r["triangles"]))
+    parts = []
+    for codec in ("drm", "draco cl10"):
+        cells = []
+        for column, verb in (("encode_s", "encode"), ("decode_s", "decode")):
+            per = sorted(float(r[column]) / int(r["triangles"]) * 1e6 for r in corpus
+                         if r["codec"] == codec and r["status"] == "ok" and int(r["triangles"]) >= 1000)
+            if not per:
+                return ""
+            median = per[len(per) // 2]
+            at = next(float(r[column]) / int(r["triangles"]) * 1e6 for r in big
+                      if r["codec"] == codec and r["mesh"] == largest["mesh"])
+            cells.append(f"{verb} {median:.2f} -> {at:.2f} µs ({at / median:.2f}x)")
+        parts.append(f"{codec}: " + ", ".join(cells))
+    return (f"Time per triangle, median over the corpus meshes of 1K triangles and more, then on "
+            f"{largest['mesh']} ({int(largest['triangles']):,} triangles): " + "; ".join(parts) + ".")
+
+
+def plots_section(data_dir="docs/data"):
+    trend = time_trend(data_dir)
     return [PLOTS_HEADING, "",
             "From `docs/peers.md`'s run (`drm-peer-bench ../shared/meshes --csv docs/data/peers.csv`) and, for the "
             "two largest sizes, igea subdivided (`tools/bench/measure_scale.py`); drawn by "
@@ -71,7 +96,7 @@ def plots_section():
             "![connectivity bits per vertex per mesh: drm, the paper, Draco, meshoptimizer, OpenCTM]"
             "(images/peers-connectivity.png)", "",
             "![encode and decode time per triangle against mesh size, drm and Draco](images/time-per-triangle.png)",
-            ""]
+            ""] + ([trend, ""] if trend else [])
 
 
 def replace_section(text, lines, before=None):
@@ -196,7 +221,7 @@ def main():
     if args.scale_only:
         with open(args.out) as f:
             text = f.read()
-        text = replace_section(text, plots_section(), before="## The paper's eight models: connectivity")
+        text = replace_section(text, plots_section(args.data), before="## The paper's eight models: connectivity")
         text = replace_section(text, scale_section(args.data))
         with open(args.out, "w") as f:
             f.write(text)
@@ -233,7 +258,7 @@ def main():
       "(`build/bin/drm-peer-bench`). Time and memory at scale, up to 4.3 million triangles: the Scale section "
       "at the end.")
     w("")
-    L.extend(plots_section())
+    L.extend(plots_section(args.data))
 
     w("## The paper's eight models: connectivity")
     w("")
