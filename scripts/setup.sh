@@ -15,6 +15,7 @@ packages=(
   xvfb xauth dpkg-dev imagemagick xdotool x11-apps
   clang libfuzzer-14-dev libclang-rt-14-dev
   libdraco-dev draco libmeshoptimizer-dev libopenctm-dev libzstd-dev   # drm-peer-bench only
+  python3-matplotlib python3-numpy   # tools/bench/make_plots.py, make_big_mesh.py, measure_scale.py
 )
 
 as_root() {

@@ -10,8 +10,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace drm {
@@ -27,7 +30,10 @@ const char* const kBenchHelp =
     "paper's DR result where the mesh is one of its models (Table 4), the\n"
     "shares of rank-1 and rank-2 codes among all codes (Table 3), geometry and\n"
     "total bits per vertex, encode and decode seconds (codec calls only, not\n"
-    "file reading), and whether the round trip is lossless. A mesh that cannot\n"
+    "file reading), the process's peak resident memory during encoding and\n"
+    "during decoding in MiB (Linux; includes the input mesh the bench holds and\n"
+    "heap the allocator kept from earlier meshes: a ceiling, exact for the first),\n"
+    "and whether the round trip is lossless. A mesh that cannot\n"
     "be read or encoded gets a row with the reason, and the bench goes on; the\n"
     "exit code is 1 if any mesh failed.\n"
     "\n"
@@ -47,6 +53,7 @@ struct BenchRow {
     double paperBpv = 0;
     double rank1Share = 0, rank2Share = 0;
     double encodeSeconds = 0, decodeSeconds = 0;
+    int64_t encodePeakKb = -1, decodePeakKb = -1;  // -1: not known
     std::string status;  // "ok" or "FAILED: reason"
 };
 
@@ -70,6 +77,25 @@ std::vector<std::string> collectMeshFiles(const std::vector<std::string>& paths)
     return files;
 }
 
+// The process's peak resident set size (VmHWM) since the last
+// resetPeakMemory(), in KiB; -1 where Linux's /proc does not tell.
+int64_t peakMemoryKb() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.compare(0, 6, "VmHWM:") == 0) return std::atoll(line.c_str() + 6);
+    return -1;
+}
+
+// Writing 5 to clear_refs resets VmHWM to the current resident size (Linux
+// 4.0 and later). False if that failed: peaks are then not per mesh.
+bool resetPeakMemory() {
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";
+    clear.flush();
+    return bool(clear);
+}
+
 double shareOf(const drm::Stats& stats, size_t rank) {
     uint64_t total = 0;
     for (uint64_t count : stats.rankHistogram) total += count;
@@ -88,15 +114,20 @@ BenchRow benchOne(const std::string& path, const drm::EncodeOptions& baseOptions
         options.progress = bar.callback();
         using Clock = std::chrono::steady_clock;
         stage = "encoding";
+        const bool encodePeak = resetPeakMemory();
         const Clock::time_point start = Clock::now();
         const drm::Encoded encoded = drm::encode(input, options);
         const Clock::time_point encodedAt = Clock::now();
+        if (encodePeak) row.encodePeakKb = peakMemoryKb();
         stage = "decoding";
+        const bool decodePeak = resetPeakMemory();
+        const Clock::time_point decodeStart = Clock::now();
         const drm::Decoded decoded = drm::decode(encoded.bytes, bar.callback());
         const Clock::time_point decodedAt = Clock::now();
+        if (decodePeak) row.decodePeakKb = peakMemoryKb();
         bar.clear();
         row.encodeSeconds = std::chrono::duration<double>(encodedAt - start).count();
-        row.decodeSeconds = std::chrono::duration<double>(decodedAt - encodedAt).count();
+        row.decodeSeconds = std::chrono::duration<double>(decodedAt - decodeStart).count();
         row.stats = encoded.stats;
         row.rank1Share = shareOf(encoded.stats, 1);
         row.rank2Share = shareOf(encoded.stats, 2);
@@ -133,6 +164,8 @@ const std::vector<Column>& columns() {
         {"total bpv", "total_bpv", true},
         {"enc s", "encode_s", true},
         {"dec s", "decode_s", true},
+        {"enc MiB", "encode_peak_mib", true},
+        {"dec MiB", "decode_peak_mib", true},
         {"copies", "vertex_copies", true},
         {"turned", "turned_faces", true},
         {"repeated", "repeated_faces", true},
@@ -161,6 +194,8 @@ std::vector<std::string> cellsOf(const BenchRow& row) {
             rate(s.totalBitsPerVertex(), 3),
             rate(row.encodeSeconds, 3),
             rate(row.decodeSeconds, 3),
+            row.measured && row.encodePeakKb >= 0 ? fixed(double(row.encodePeakKb) / 1024, 1) : none,
+            row.measured && row.decodePeakKb >= 0 ? fixed(double(row.decodePeakKb) / 1024, 1) : none,
             count(s.splitVertices),
             count(s.flippedFaces),
             count(s.repeatedFaces),

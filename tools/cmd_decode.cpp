@@ -1,4 +1,6 @@
-// drm decode IN.drm OUT.ply: decompress to a mesh file.
+// drm decode IN.drm OUT.ply, or drm decode INPUTS... -o DIR: decompress to
+// mesh files.
+#include "batch.h"
 #include "cli.h"
 #include "commands.h"
 
@@ -6,37 +8,98 @@
 #include <drm_vcg/mesh_io.h>
 
 #include <cstdio>
+#include <filesystem>
 
 namespace drm {
 namespace cli {
 
 const char* const kDecodeHelp =
     "usage: drm decode IN.drm OUT.ply\n"
+    "       drm decode INPUTS... -o DIR [-j N]\n"
     "\n"
     "Decompresses IN.drm into a binary PLY mesh (float x, y, z per vertex,\n"
     "triangles). Vertices come out in the order the file stores them: the\n"
     "input's order if it was encoded with --keep-vertex-order.\n"
-    "OUT.ply is written completely or not at all.\n";
+    "OUT.ply is written completely or not at all.\n"
+    "\n"
+    "With -o DIR, every input is decompressed into DIR/NAME.ply (NAME: the\n"
+    "input's name without its extension; DIR is created if missing). An input\n"
+    "may be a folder: its .drm files, in name order (not recursive). Files are\n"
+    "spread over N worker threads; a line is printed as each file finishes, then\n"
+    "a summary. A file that fails is reported, naming it, and the others are\n"
+    "still written; the exit code is then 1.\n"
+    "\n"
+    "options:\n"
+    "  -o, --output-dir DIR  write DIR/NAME.ply for every input (several inputs, folders)\n"
+    "  -j, --jobs N      files decoded at once with -o (default: the number of cores)\n";
 
-int runDecode(const std::vector<std::string>& args) {
-    const Arguments parsed = parseArguments("decode", args, {}, {});
-    parsed.expectPositional(2, 2, "an input .drm file and an output .ply file");
-    const std::string& input = parsed.positional[0];
-    const std::string& output = parsed.positional[1];
+namespace {
 
+struct DecodedFile {
+    std::string line;  // "IN -> OUT: V ..., F ..."
+    uint64_t bytes = 0;
+};
+
+// Reads, decodes and writes one file; throws drm::Error naming the input.
+DecodedFile decodeFile(const std::string& input, const std::string& output, ProgressBar* bar) {
     const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
     drm::Decoded decoded;
-    {
-        ProgressBar bar("decoding " + fileName(input));
-        try {
-            decoded = drm::decode(bytes, bar.callback());
-        } catch (const drm::Error& e) {
-            throw drm::Error("cannot decode " + input + ": " + e.what());
-        }
+    try {
+        decoded = drm::decode(bytes, bar ? bar->callback() : drm::Progress());
+    } catch (const drm::Error& e) {
+        throw drm::Error("cannot decode " + input + ": " + e.what());
     }
+    if (bar) bar->clear();
     drm::vcgio::savePly(output, decoded.mesh);
-    std::printf("%s -> %s: V %llu, F %llu\n", input.c_str(), output.c_str(),
-                (unsigned long long)decoded.stats.vertices, (unsigned long long)decoded.stats.faces);
+    DecodedFile result;
+    result.line = input + " -> " + output + ": V " + std::to_string(decoded.stats.vertices) + ", F " +
+                  std::to_string(decoded.stats.faces);
+    result.bytes = fileBytes(output);
+    return result;
+}
+
+bool isDrmFileName(const std::string& name) { return hasExtension(name, ".drm"); }
+
+}  // namespace
+
+int runDecode(const std::vector<std::string>& args) {
+    const Arguments parsed = parseArguments("decode", args, batchOptionNames(), {});
+    if (parsed.has("-o") && parsed.has("--output-dir")) throw UsageError("give -o or --output-dir, not both");
+    const int jobs = jobsFrom(parsed);
+    if (parsed.has("-o") || parsed.has("--output-dir")) {
+        parsed.expectPositional(1, size_t(-1), "input .drm files or folders");
+        const std::string dir = parsed.has("-o") ? parsed.value("-o") : parsed.value("--output-dir");
+        const std::vector<std::string> inputs = collectInputs(parsed.positional, isDrmFileName, ".drm files");
+        const std::vector<std::string> outputs = outputPaths(inputs, dir, ".ply");
+        std::vector<BatchFile> files;
+        for (size_t i = 0; i < inputs.size(); ++i) files.push_back({inputs[i], outputs[i], fileBytes(inputs[i])});
+        runBatch({"decoded", "bytes out", true}, files, jobs, [](const BatchFile& file) {
+            FileOutcome outcome;
+            try {
+                const DecodedFile decoded = decodeFile(file.input, file.output, nullptr);
+                outcome.ok = true;
+                outcome.line = decoded.line;
+                outcome.bytesOut = decoded.bytes;
+            } catch (const std::exception& e) {
+                outcome.error = e.what();
+            }
+            return outcome;
+        });
+        return 0;
+    }
+    std::error_code error;
+    for (const std::string& path : parsed.positional)
+        if (std::filesystem::is_directory(path, error))
+            throw UsageError("'decode' reads a folder (" + path + ") only with -o DIR (see 'drm help decode')");
+    if (parsed.positional.size() > 2)
+        throw UsageError("'decode' takes an input .drm file and an output .ply file, or inputs and -o DIR, but got " +
+                         std::to_string(parsed.positional.size()) + " names (see 'drm help decode')");
+    parsed.expectPositional(2, 2, "an input .drm file and an output .ply file (or inputs and -o DIR)");
+    const std::string& input = parsed.positional[0];
+    const std::string& output = parsed.positional[1];
+    ProgressBar bar("decoding " + fileName(input));
+    const DecodedFile decoded = decodeFile(input, output, &bar);
+    std::printf("%s\n", decoded.line.c_str());
     return 0;
 }
 

@@ -1,11 +1,14 @@
-// drm encode IN OUT.drm: compress a mesh file.
+// drm encode IN OUT.drm, or drm encode INPUTS... -o DIR: compress mesh files.
+#include "batch.h"
 #include "cli.h"
 #include "commands.h"
 #include "mesh_input.h"
 
 #include <drm_vcg/file_io.h>
+#include <drm_vcg/mesh_io.h>
 
 #include <cstdio>
+#include <filesystem>
 
 namespace drm {
 namespace cli {
@@ -13,11 +16,21 @@ namespace cli {
 const char* const kEncodeHelp =
     "usage: drm encode IN OUT.drm [--bits N] [--predictor P] [--curvature on|off] [--geometry G] [--levers L]\n"
     "                  [--keep-vertex-order]\n"
+    "       drm encode INPUTS... -o DIR [-j N] [options as above]\n"
     "\n"
     "Compresses the triangle mesh IN (PLY, OBJ, OFF or STL) into OUT.drm.\n"
     "Vertex positions are quantized to N bits per axis over the bounding box;\n"
     "connectivity is coded losslessly. Colours, normals and texture coordinates\n"
     "are not kept (a note says so). OUT.drm is written completely or not at all.\n"
+    "\n"
+    "With -o DIR, every input is compressed into DIR/NAME.drm (NAME: the input's\n"
+    "name without its extension; DIR is created if missing). An input may be a\n"
+    "folder: its .ply, .obj, .off and .stl files, in name order (not recursive).\n"
+    "Files are spread over N worker threads, one file each at a time; a line is\n"
+    "printed as each file finishes, then a summary (files, bytes in and out,\n"
+    "compression ratio, wall time). A file that fails is reported, naming it, and\n"
+    "the others are still written; the exit code is then 1. Each output is the\n"
+    "same file a single 'drm encode IN OUT.drm' writes.\n"
     "\n"
     "options:\n"
     "  --bits N          quantization bits per axis, 1..21 (default 12)\n"
@@ -32,31 +45,95 @@ const char* const kEncodeHelp =
     "                    a list of filter, gap, context, angle (see docs/format.md);\n"
     "                    by default meshes under 20000 faces also try none\n"
     "  --keep-vertex-order  also store the input's vertex order, so that decoding\n"
-    "                    gives vertices back in input order (costs bits)\n";
+    "                    gives vertices back in input order (costs bits)\n"
+    "  -o, --output-dir DIR  write DIR/NAME.drm for every input (several inputs, folders)\n"
+    "  -j, --jobs N      files encoded at once with -o (default: the number of cores)\n";
 
-int runEncode(const std::vector<std::string>& args) {
-    const Arguments parsed = parseArguments("encode", args, encodeOptionNames(), encodeFlagNames());
-    parsed.expectPositional(2, 2, "an input mesh and an output .drm file");
-    const std::string& input = parsed.positional[0];
-    const std::string& output = parsed.positional[1];
-    drm::EncodeOptions options = encodeOptionsFrom(parsed);
+namespace {
 
+struct EncodedFile {
+    std::vector<std::string> notes;  // about the file as read
+    std::string repairs;             // what the codec repaired, or ""
+    std::string line;  // "IN -> OUT: summary"
+    uint64_t bytes = 0;
+};
+
+// Reads, encodes and writes one file; throws drm::Error naming the input.
+EncodedFile encodeFile(const std::string& input, const std::string& output, drm::EncodeOptions options,
+                       ProgressBar* bar) {
     const drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
     drm::Encoded encoded;
-    {
-        ProgressBar bar("encoding " + fileName(input));
-        options.progress = bar.callback();
-        try {
-            encoded = drm::encode(loaded.mesh, options);
-        } catch (const drm::Error& e) {
-            throw drm::Error("cannot encode " + input + ": " + e.what());
-        }
+    if (bar) options.progress = bar->callback();
+    try {
+        encoded = drm::encode(loaded.mesh, options);
+    } catch (const drm::Error& e) {
+        throw drm::Error("cannot encode " + input + ": " + e.what());
     }
+    if (bar) bar->clear();
     drm::vcgio::writeFileAtomically(output, encoded.bytes);
-    printNotes(loaded.notes);
-    const std::string repairs = repairsOf(encoded.stats);
-    if (!repairs.empty()) printNote(input + ": " + repairs);
-    std::printf("%s -> %s: %s\n", input.c_str(), output.c_str(), summaryOf(encoded.stats).c_str());
+    EncodedFile result;
+    result.notes = loaded.notes;
+    result.repairs = repairsOf(encoded.stats);
+    result.line = input + " -> " + output + ": " + summaryOf(encoded.stats);
+    result.bytes = encoded.bytes.size();
+    return result;
+}
+
+int encodeMany(const Arguments& parsed, const drm::EncodeOptions& options) {
+    const std::string dir = parsed.has("-o") ? parsed.value("-o") : parsed.value("--output-dir");
+    const int jobs = jobsFrom(parsed);
+    const std::vector<std::string> inputs =
+        collectInputs(parsed.positional, [](const std::string& name) { return drm::vcgio::isMeshFileName(name); },
+                      ".ply, .obj, .off or .stl files");
+    const std::vector<std::string> outputs = outputPaths(inputs, dir, ".drm");
+    std::vector<BatchFile> files;
+    for (size_t i = 0; i < inputs.size(); ++i) files.push_back({inputs[i], outputs[i], fileBytes(inputs[i])});
+    runBatch({"encoded", "bytes out", false}, files, jobs, [&](const BatchFile& file) {
+        FileOutcome outcome;
+        try {
+            const EncodedFile encoded = encodeFile(file.input, file.output, options, nullptr);
+            outcome.ok = true;
+            outcome.line = encoded.line;
+            outcome.notes = encoded.notes;
+            if (!encoded.repairs.empty()) outcome.notes.push_back(encoded.repairs);
+            outcome.bytesOut = encoded.bytes;
+        } catch (const std::exception& e) {
+            outcome.error = e.what();
+        }
+        return outcome;
+    });
+    return 0;
+}
+
+}  // namespace
+
+int runEncode(const std::vector<std::string>& args) {
+    std::vector<std::string> valued = encodeOptionNames();
+    for (const std::string& name : batchOptionNames()) valued.push_back(name);
+    const Arguments parsed = parseArguments("encode", args, valued, encodeFlagNames());
+    drm::EncodeOptions options = encodeOptionsFrom(parsed);
+    if (parsed.has("-o") && parsed.has("--output-dir")) throw UsageError("give -o or --output-dir, not both");
+    if (parsed.has("-o") || parsed.has("--output-dir")) {
+        parsed.expectPositional(1, size_t(-1), "input meshes or folders");
+        return encodeMany(parsed, options);
+    }
+    jobsFrom(parsed);  // a malformed -j is an error even where it does not matter
+    std::error_code error;
+    for (const std::string& path : parsed.positional)
+        if (std::filesystem::is_directory(path, error))
+            throw UsageError("'encode' reads a folder (" + path + ") only with -o DIR (see 'drm help encode')");
+    if (parsed.positional.size() > 2)
+        throw UsageError("'encode' takes an input mesh and an output .drm file, or inputs and -o DIR, but got " +
+                         std::to_string(parsed.positional.size()) + " names (see 'drm help encode')");
+    parsed.expectPositional(2, 2, "an input mesh and an output .drm file (or inputs and -o DIR)");
+    const std::string& input = parsed.positional[0];
+    const std::string& output = parsed.positional[1];
+
+    ProgressBar bar("encoding " + fileName(input));
+    const EncodedFile encoded = encodeFile(input, output, options, &bar);
+    printNotes(encoded.notes);
+    if (!encoded.repairs.empty()) printNote(input + ": " + encoded.repairs);
+    std::printf("%s\n", encoded.line.c_str());
     return 0;
 }
 

@@ -3,11 +3,22 @@
 
 #include "cli.h"
 
+#include <mutex>
+
 namespace drm {
 namespace cli {
 
 drm::vcgio::LoadedMesh loadMeshForEncoding(const std::string& path) {
-    drm::vcgio::LoadedMesh loaded = drm::vcgio::loadMesh(path);
+    // vcglib's readers are not thread-safe (the PLY reader tokenizes with
+    // strtok, error tables are filled on first use): `drm encode -o` and
+    // `drm verify` with several files read one file at a time and encode in
+    // parallel.
+    static std::mutex reading;
+    drm::vcgio::LoadedMesh loaded;
+    {
+        std::lock_guard<std::mutex> lock(reading);
+        loaded = drm::vcgio::loadMesh(path);
+    }
     if (loaded.mesh.vertexCount() == 0) throw drm::Error("cannot encode " + path + ": the mesh has no vertices");
     return loaded;
 }

@@ -141,6 +141,10 @@ bench)
     grep -q 'nefertiti.ply .* ok$' out.txt || fail "bench table: $(cat out.txt)"
     [ "$(wc -l <b.csv)" -eq 3 ] || fail "bench CSV: $(cat b.csv)"
     grep -q '^mesh,vertices,triangles,' b.csv || fail "bench CSV header: $(head -1 b.csv)"
+    # Peak memory per mesh (Linux /proc): a positive number of MiB, encode and decode.
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+             !($col["encode_peak_mib"] > 0 && $col["decode_peak_mib"] > 0) { bad = 1 }
+             END { exit bad || !col["encode_peak_mib"] }' b.csv || fail "bench CSV peak memory: $(cat b.csv)"
     grep -q '^| nefertiti.ply | 299 | 562 |' b.md || fail "bench Markdown: $(cat b.md)"
     grep -q '| 1.66 |' b.md || fail "bench Markdown lacks the paper's nefertiti rate: $(cat b.md)"
     # A failing mesh gets its row, the others are still measured, exit code 1.
@@ -307,6 +311,108 @@ render_failures)
     [ "$(cat out.png)" = precious ] || fail "a failed render changed the existing output"
     expect_error 1 - render half.drm out.png
     [ "$(cat out.png)" = precious ] || fail "a failed render changed the existing output"
+    ;;
+many_files)
+    # Several inputs into a folder: every output byte-identical to a single run.
+    meshes="torus nefertiti fandisk blobby-3cc"
+    run 0 encode "$data/torus.ply" "$data/nefertiti.ply" "$data/fandisk.ply" "$data/blobby-3cc.ply" -o enc -j 3
+    for m in $meshes; do
+        grep -q "^\[[1-4]/4\] .*$m.ply -> enc/$m.drm: V " out.txt || fail "no line for $m: $(cat out.txt)"
+    done
+    [ "$(grep -c '^\[' out.txt)" -eq 4 ] || fail "expected 4 file lines: $(cat out.txt)"
+    tail -1 out.txt | grep -qE '^encoded 4 of 4 files: [0-9]+ bytes in -> [0-9]+ bytes out, compression [0-9.]+:1, [0-9.]+ s wall, 3 jobs$' ||
+        fail "encode summary: $(tail -1 out.txt)"
+    [ ! -s err.txt ] || fail "stderr not empty: $(cat err.txt)"
+    run 0 decode enc/torus.drm enc/nefertiti.drm enc/fandisk.drm enc/blobby-3cc.drm --output-dir dec --jobs 2
+    tail -1 out.txt | grep -qE '^decoded 4 of 4 files: .* expansion 1:[0-9.]+, .* 2 jobs$' || fail "decode summary: $(tail -1 out.txt)"
+    mkdir single
+    for m in $meshes; do
+        run 0 encode "$data/$m.ply" single/$m.drm
+        cmp -s single/$m.drm enc/$m.drm || fail "$m.drm differs from a single-file encode"
+        run 0 decode single/$m.drm single/$m.ply
+        cmp -s single/$m.ply dec/$m.ply || fail "$m.ply differs from a single-file decode"
+    done
+    # Options apply to every file; -j 1 gives the same files.
+    run 0 encode "$data/torus.ply" "$data/fandisk.ply" -o opt -j 1 --bits 10 --levers none
+    grep -q ' 1 job$' out.txt || fail "-j 1 summary: $(tail -1 out.txt)"
+    run 0 encode "$data/fandisk.ply" single/f10.drm --bits 10 --levers none
+    cmp -s single/f10.drm opt/fandisk.drm || fail "--bits/--levers not applied alike with -o"
+    # Several inputs verified at once.
+    cp "$data/bad/fin.off" fin.off
+    run 0 verify "$data/torus.ply" fin.off "$data/fandisk.ply" -j 2
+    [ "$(grep -c ': lossless$' out.txt)" -eq 3 ] || fail "verify lines: $(cat out.txt)"
+    tail -1 out.txt | grep -q '^verified lossless 3 of 3 files: ' || fail "verify summary: $(tail -1 out.txt)"
+    grep -q '^drm: note: fin.off: cut into manifold pieces' err.txt || fail "verify repairs note: $(cat err.txt)"
+    ;;
+many_files_folder)
+    # A folder: its mesh files (not others), in a folder created on the way.
+    mkdir in
+    cp "$data/torus.ply" "$data/nefertiti.ply" "$data/bad/fin.off" in/
+    echo 'not a mesh' >in/README.txt
+    run 0 encode in -o out/deeper
+    [ "$(ls out/deeper | tr '\n' ' ')" = "fin.drm nefertiti.drm torus.drm " ] || fail "folder encode wrote: $(ls out/deeper)"
+    grep -q '^drm: note: in/fin.off: cut into manifold pieces' err.txt || fail "repairs note: $(cat err.txt)"
+    tail -1 out.txt | grep -q '^encoded 3 of 3 files: ' || fail "folder summary: $(tail -1 out.txt)"
+    cp "$data/fandisk.ply" more.ply
+    run 0 encode in more.ply -o out2
+    [ "$(ls out2 | wc -l)" -eq 4 ] || fail "folder + file: $(ls out2)"
+    run 0 decode out/deeper -o dec
+    [ "$(ls dec | tr '\n' ' ')" = "fin.ply nefertiti.ply torus.ply " ] || fail "folder decode wrote: $(ls dec)"
+    run 0 verify in
+    tail -1 out.txt | grep -q '^verified lossless 3 of 3 files: ' || fail "folder verify: $(tail -1 out.txt)"
+    # A folder without meshes, and one without .drm files.
+    mkdir empty
+    expect_error 1 - encode empty -o x
+    expect_error 1 - decode in -o x
+    ;;
+many_files_failure)
+    # One bad file among good ones: the others written, the bad one named,
+    # exit code 1, and its existing output left as it was.
+    mkdir out
+    printf 'precious' >out/nan.drm
+    run 1 encode "$data/torus.ply" "$data/bad/nan.ply" no-such-mesh.ply "$data/fandisk.ply" -o out -j 2
+    [ -s out/torus.drm ] && [ -s out/fandisk.drm ] || fail "good files not written: $(ls out)"
+    [ "$(cat out/nan.drm)" = precious ] || fail "a failed encode changed the existing output"
+    [ ! -e out/no-such-mesh.drm ] || fail "a missing input left an output"
+    ! ls out/*.tmp.* >/dev/null 2>&1 || fail "temporary file left: $(ls out)"
+    grep -q '^drm: error: .*nan.ply: .*NaN' err.txt || fail "nan.ply not named: $(cat err.txt)"
+    grep -q '^drm: error: .*no-such-mesh.ply' err.txt || fail "missing file not named: $(cat err.txt)"
+    tail -1 err.txt | grep -q '^drm: error: 2 of 4 files failed: .*nan.ply, no-such-mesh.ply$\|^drm: error: 2 of 4 files failed: no-such-mesh.ply, .*nan.ply$' ||
+        fail "final error line: $(tail -1 err.txt)"
+    [ "$(wc -l <err.txt)" -eq 3 ] || fail "expected 3 error lines: $(cat err.txt)"
+    tail -1 out.txt | grep -q '^encoded 2 of 4 files (2 failed): ' || fail "summary: $(tail -1 out.txt)"
+    # Decoding: a corrupt file among good ones.
+    printf 'not a drm file' >out/bad.drm
+    mkdir dec
+    printf 'precious' >dec/bad.ply
+    run 1 decode out -o dec
+    [ -s dec/torus.ply ] && [ -s dec/fandisk.ply ] || fail "good files not decoded: $(ls dec)"
+    [ "$(cat dec/bad.ply)" = precious ] || fail "a failed decode changed the existing output"
+    grep -q '^drm: error: cannot decode out/bad.drm' err.txt || fail "bad.drm not named: $(cat err.txt)"
+    grep -q '^drm: error: cannot decode out/nan.drm' err.txt || fail "nan.drm not named: $(cat err.txt)"
+    # Verifying: one bad file, exit code 1.
+    run 1 verify "$data/torus.ply" "$data/bad/bad-index.off"
+    grep -q 'bad-index.off' err.txt || fail "verify: bad file not named: $(cat err.txt)"
+    grep -q 'torus.ply: .*: lossless$' out.txt || fail "verify: good file not verified: $(cat out.txt)"
+    ;;
+many_files_usage)
+    expect_error 2 - encode "$data/torus.ply" "$data/fandisk.ply" "$data/nefertiti.ply"
+    grep -q -- '-o DIR' err.txt || fail "no hint at -o: $(cat err.txt)"
+    expect_error 2 - encode "$data" out.drm
+    expect_error 2 - decode a.drm b.drm c.drm
+    expect_error 2 - encode "$data/torus.ply" -o out -j 0
+    expect_error 2 - encode "$data/torus.ply" -o out -j many
+    expect_error 2 - verify "$data/torus.ply" "$data/fandisk.ply" --jobs -3
+    expect_error 2 - encode "$data/torus.ply" -o
+    [ ! -e out ] || fail "a usage error created the output folder"
+    # Two inputs with one name: refused before anything is written.
+    expect_error 1 - encode "$data/bad/nan.ply" "$data/torus.ply" nan.off -o same
+    grep -q 'both be written to same/nan.drm' err.txt || fail "name clash: $(cat err.txt)"
+    [ ! -e same ] || fail "a name clash created the output folder"
+    # The output folder is a file.
+    printf 'x' >afile
+    expect_error 1 - encode "$data/torus.ply" -o afile
+    [ "$(cat afile)" = x ] || fail "the file given as folder changed"
     ;;
 *)
     fail "unknown case"

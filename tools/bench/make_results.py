@@ -2,9 +2,13 @@
 """Regenerates docs/results.md from `drm bench` runs on the benchmark corpus.
 
 Usage: tools/bench/make_results.py [--drm build/bin/drm] [--meshes ../shared/meshes] [--out docs/results.md]
+       tools/bench/make_results.py --scale-only     # only rewrite the plots and "Scale" sections
 
 Every figure in the output comes from the runs this script makes; the
-paper's and the method notes' figures are quoted from their tables.
+paper's and the method notes' figures are quoted from their tables. The
+"Scale" section comes from docs/data/scale.csv and docs/data/batch.csv,
+recorded by tools/bench/measure_scale.py (minutes of runs, so not redone
+here); the plots are drawn by tools/bench/make_plots.py.
 """
 import argparse
 import csv
@@ -49,6 +53,158 @@ def bench(drm, files, *options):
             return {os.path.splitext(row["mesh"])[0]: row for row in csv.DictReader(f)}
 
 
+def read_rows(path):
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+PLOTS_HEADING = "## Against the codecs people use (plots)"
+
+
+def time_trend(data_dir):
+    """A sentence: median µs per triangle on the corpus against the largest subdivided mesh, drm and Draco."""
+    corpus = read_rows(os.path.join(data_dir, "peers.csv"))
+    big = read_rows(os.path.join(data_dir, "peers-big.csv"))
+    if not corpus or not big:
+        return ""
+    largest = max((r for r in big if r["status"] == "ok"), key=lambda r: int(r["triangles"]))
+    parts = []
+    for codec in ("drm", "draco cl10"):
+        cells = []
+        for column, verb in (("encode_s", "encode"), ("decode_s", "decode")):
+            per = sorted(float(r[column]) / int(r["triangles"]) * 1e6 for r in corpus
+                         if r["codec"] == codec and r["status"] == "ok" and int(r["triangles"]) >= 1000)
+            if not per:
+                return ""
+            median = per[len(per) // 2]
+            at = next(float(r[column]) / int(r["triangles"]) * 1e6 for r in big
+                      if r["codec"] == codec and r["mesh"] == largest["mesh"])
+            cells.append(f"{verb} {median:.2f} -> {at:.2f} µs ({at / median:.2f}x)")
+        parts.append(f"{codec}: " + ", ".join(cells))
+    return (f"Time per triangle, median over the corpus meshes of 1K triangles and more, then on "
+            f"{largest['mesh']} ({int(largest['triangles']):,} triangles): " + "; ".join(parts) + ".")
+
+
+def plots_section(data_dir="docs/data"):
+    trend = time_trend(data_dir)
+    return [PLOTS_HEADING, "",
+            "From `docs/peers.md`'s run (`drm-peer-bench ../shared/meshes --csv docs/data/peers.csv`) and, for the "
+            "two largest sizes, igea subdivided (`tools/bench/measure_scale.py`); drawn by "
+            "`python3 tools/bench/make_plots.py`.", "",
+            "![connectivity bits per vertex per mesh: drm, the paper, Draco, meshoptimizer, OpenCTM]"
+            "(images/peers-connectivity.png)", "",
+            "![encode and decode time per triangle against mesh size, drm and Draco](images/time-per-triangle.png)",
+            ""] + ([trend, ""] if trend else [])
+
+
+def replace_section(text, lines, before=None):
+    """text with the section headed lines[0] replaced by lines; a missing one goes before the
+    heading `before` if given and present, else at the end."""
+    heading = "\n" + lines[0] + "\n"
+    section = "\n".join(lines) + "\n"
+    start = text.find(heading)
+    if start >= 0:
+        end = text.find("\n## ", start + 1)
+        return text[:start + 1] + section + (text[end + 1:] if end >= 0 else "")
+    at = text.find("\n" + before + "\n") if before else -1
+    if at >= 0:
+        return text[:at + 1] + section + "\n" + text[at + 1:]
+    return text.rstrip("\n") + "\n\n" + section
+
+
+def scale_section(data_dir):
+    """The "Scale" section, from measure_scale.py's CSV files."""
+    rows = read_rows(os.path.join(data_dir, "scale.csv"))
+    batch = read_rows(os.path.join(data_dir, "batch.csv"))
+    L = []
+    w = L.append
+    w("## Scale")
+    w("")
+    if not rows:
+        w("No measurements recorded yet: run `python3 tools/bench/measure_scale.py` (see below).")
+        w("")
+        return L
+    floor = next((int(r["encode_peak_kb"]) for r in rows if r["source"] == "process floor"), 0)
+    data = sorted((r for r in rows if r["source"] != "process floor"), key=lambda r: int(r["triangles"]))
+    mib = lambda kb: f"{int(kb) / 1024:.0f}" if int(kb) >= 10 * 1024 else f"{int(kb) / 1024:.1f}"
+    above = lambda r, col: (int(r[col]) - floor) * 1024 / int(r["vertices"])
+    w("`drm encode IN OUT.drm` and `drm decode OUT.drm OUT.ply` run as separate processes, as a user runs them "
+      "(reading and writing the files included), on corpus meshes of several sizes and on igea.ply subdivided "
+      "1-to-4 at edge midpoints once and twice (`tools/bench/make_big_mesh.py`; made in a temporary folder, not "
+      "kept). Wall time is the shortest of the runs; peak memory is the process's maximum resident set size "
+      "(`ru_maxrss` from `wait4`), the smallest of the runs. \"B/V\" is peak bytes per vertex; \"above floor\" "
+      f"subtracts the {floor / 1024:.1f} MiB that `drm --version` alone takes (code and shared libraries), which "
+      "dominates the small meshes. The subdivided meshes are more regular than scans (flat midpoints), so their "
+      "rates are not representative; they test time and memory.")
+    w("")
+    w("| mesh | V | T | .drm bytes | encode s | decode s | encode µs/T | decode µs/T | encode peak MiB | "
+      "decode peak MiB | encode B/V | decode B/V | encode B/V above floor | decode B/V above floor | runs |")
+    w("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for r in data:
+        name = r["mesh"] + (" (subdivided)" if r["source"] != "corpus" else "")
+        w(f"| {name} | {r['vertices']} | {r['triangles']} | {r['drm_bytes']} | {r['encode_s']} | {r['decode_s']} | "
+          f"{float(r['encode_us_per_tri']):.2f} | {float(r['decode_us_per_tri']):.2f} | {mib(r['encode_peak_kb'])} | "
+          f"{mib(r['decode_peak_kb'])} | {float(r['encode_peak_b_per_vertex']):.0f} | "
+          f"{float(r['decode_peak_b_per_vertex']):.0f} | {above(r, 'encode_peak_kb'):.0f} | "
+          f"{above(r, 'decode_peak_kb'):.0f} | {r['runs']} |")
+    w("")
+    big = data[-1]
+    source = next((r for r in data if r["source"] == "corpus" and big["mesh"].startswith(r["mesh"] + "-")), None)
+    V, T = int(big["vertices"]), int(big["triangles"])
+    w(f"The largest mesh, {big['mesh']} ({T:,} triangles, {V:,} vertices, {int(big['input_bytes']) / 1e6:.0f} MB of "
+      f"binary PLY): encoded in {float(big['encode_s']):.1f} s with a peak of {int(big['encode_peak_kb']) / 1024:.0f} "
+      f"MiB ({float(big['encode_peak_b_per_vertex']):.0f} bytes per vertex), decoded in {float(big['decode_s']):.1f} s "
+      f"with a peak of {int(big['decode_peak_kb']) / 1024:.0f} MiB ({float(big['decode_peak_b_per_vertex']):.0f} bytes "
+      f"per vertex); the .drm file is {int(big['drm_bytes']):,} bytes.")
+    if source:
+        k = int(big["triangles"]) / int(source["triangles"])
+        ratio = lambda col: float(big[col]) / float(source[col])
+        w(f"Against {source['mesh']} itself ({int(source['triangles']):,} triangles, {k:.0f} times fewer), time per "
+          f"triangle is {ratio('encode_us_per_tri'):.2f} times as much to encode and {ratio('decode_us_per_tri'):.2f} "
+          f"times to decode, and peak memory per vertex {ratio('encode_peak_b_per_vertex'):.2f} and "
+          f"{ratio('decode_peak_b_per_vertex'):.2f} times (1 would be exactly linear).")
+    w("")
+    w("![drm encode and decode: peak memory per vertex and time per triangle against mesh size]"
+      "(images/scale-memory.png)")
+    w("")
+    if batch:
+        w("Many files at once, on the whole corpus folder (`drm encode DIR -o OUT -j N`; wall and CPU time of the "
+          "process, the run with the shortest wall time of 2). \"cores busy\" is CPU time over wall time: how much "
+          "parallel work the machine actually gave the process, which on this shared machine depends on what else "
+          "runs.")
+        w("")
+        w("| files | -j | wall s | CPU s | cores busy | peak MiB | speed-up over -j 1 |")
+        w("|---:|---:|---:|---:|---:|---:|---:|")
+        one = next((float(b["wall_s"]) for b in batch if b["jobs"] == "1"), None)
+        for b in batch:
+            speed = f"{one / float(b['wall_s']):.2f}" if one else "-"
+            cpu = number_or_none(b.get("cpu_s"))
+            w(f"| {b['files']} | {b['jobs']} | {float(b['wall_s']):.2f} | {fmt(cpu, 2)} | "
+              f"{fmt(cpu / float(b['wall_s']) if cpu else None, 2)} | {int(b['peak_kb']) / 1024:.0f} | {speed} |")
+        w("")
+    w("Absolute times move with the codec's own optimization and with the load of this shared 2-core machine; "
+      "regenerate rather than compare with older figures:")
+    w("")
+    w("```sh")
+    w("bash scripts/make-bench-docs.sh --lock /tmp/drm-build.lock        # all of the below, and docs/peers.md")
+    w("# or step by step:")
+    w("python3 tools/bench/measure_scale.py --lock /tmp/drm-build.lock   # docs/data/{scale,batch,peers-big}.csv, ~15 min")
+    w("python3 tools/bench/make_plots.py                                  # docs/images/*.png")
+    w("python3 tools/bench/make_results.py --scale-only                   # this section")
+    w("```")
+    w("")
+    return L
+
+
+def number_or_none(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return None
+
+
 def fmt(x, digits=3):
     return "-" if x is None or x == "" else f"{float(x):.{digits}f}"
 
@@ -58,7 +214,19 @@ def main():
     parser.add_argument("--drm", default="build/bin/drm")
     parser.add_argument("--meshes", default="../shared/meshes")
     parser.add_argument("--out", default="docs/results.md")
+    parser.add_argument("--data", default="docs/data", help="measure_scale.py's CSV files")
+    parser.add_argument("--scale-only", action="store_true",
+                        help="only (re)write the plots and Scale sections of --out (no benches run)")
     args = parser.parse_args()
+    if args.scale_only:
+        with open(args.out) as f:
+            text = f.read()
+        text = replace_section(text, plots_section(args.data), before="## The paper's eight models: connectivity")
+        text = replace_section(text, scale_section(args.data))
+        with open(args.out, "w") as f:
+            f.write(text)
+        print(f"rewrote the plots and Scale sections of {args.out}", file=sys.stderr)
+        return
     meshes = sorted(os.path.join(args.meshes, f) for f in os.listdir(args.meshes) if f.endswith(".ply"))
     paper_files = [os.path.join(args.meshes, m + ".ply") for m in PAPER_MODELS]
 
@@ -87,8 +255,10 @@ def main():
     w("")
     w("Reproduce: `bash scripts/build.sh && python3 tools/bench/make_results.py`. "
       "The comparison with Draco, meshoptimizer and OpenCTM, measured in one run, is in `docs/peers.md` "
-      "(`build/bin/drm-peer-bench`).")
+      "(`build/bin/drm-peer-bench`). Time and memory at scale, up to 4.3 million triangles: the Scale section "
+      "at the end.")
     w("")
+    L.extend(plots_section(args.data))
 
     w("## The paper's eight models: connectivity")
     w("")
@@ -202,6 +372,7 @@ def main():
             w(f"| {m} | {a['vertices']} | {fmt(a['total_bpv'], 2)} | {fmt(b['total_bpv'], 2)} | "
               f"{float(b['total_bpv']) - float(a['total_bpv']):.2f} |")
     w("")
+    L.extend(scale_section(args.data))
     os.makedirs(os.path.dirname(args.out) or ".", exist_ok=True)
     with open(args.out, "w") as f:
         f.write("\n".join(L) + "\n")

@@ -325,7 +325,17 @@ std::string markdownReport(const BenchRun& run) {
         << "drm's figure over each peer's, geometric mean of the per-mesh ratios over the meshes both encode "
         << "(below 1: drm smaller or faster); \"conn smaller\" counts the meshes where drm's connectivity is the "
         << "smaller:\n\n"
-        << toMarkdown(summaryTable(run)) << "\n";
+        << toMarkdown(summaryTable(run)) << "\n"
+        << "## Plots\n\n"
+        << "Drawn by `tools/bench/make_plots.py` (python3-matplotlib) from this run's CSV "
+        << "(`--csv docs/data/peers.csv`), plus the subdivided meshes of `tools/bench/measure_scale.py` for the "
+        << "largest sizes:\n\n"
+        << "```sh\npython3 tools/bench/make_plots.py    # docs/images/peers-connectivity.png, "
+        << "docs/images/time-per-triangle.png\n```\n\n"
+        << "This file, its data, the scale figures and the plots all at once: `bash scripts/make-bench-docs.sh` "
+        << "(add `--lock FILE` on a shared machine).\n\n"
+        << "![connectivity bits per vertex per mesh](images/peers-connectivity.png)\n\n"
+        << "![encode and decode time per triangle against mesh size](images/time-per-triangle.png)\n\n";
     for (Metric metric : kMetrics) {
         out << "## " << metricTitle(metric)
             << (metric == Metric::Encode || metric == Metric::Decode ? " (best of " + std::to_string(run.runs) + ")"
