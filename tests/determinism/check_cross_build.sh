@@ -65,7 +65,7 @@ for build in "${builds[@]}"; do
   # shellcheck disable=SC2086
   locked "$cxx" -std=c++17 -ffp-contract=off -fno-fast-math $flags -w \
     -I"$src/codec/include" -I"$src/codec/src" -I"$src/tests/support" \
-    "${sources[@]}" -o "$dir/encode_decode_dump" -llz4 -lpthread
+    "${sources[@]}" -o "$dir/encode_decode_dump" -lpthread
   built=$(date +%s)
   "$dir/encode_decode_dump" --ply-dir "$src/tests/data" --write "$dir/files" >"$dir/output.txt"
   echo "   built in $((built - start)) s, ran in $(($(date +%s) - built)) s: $(wc -l <"$dir/output.txt") lines, $(tail -1 "$dir/output.txt")"
