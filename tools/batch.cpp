@@ -39,6 +39,18 @@ int jobsFrom(const Arguments& args) {
     return int(jobs);
 }
 
+void expectInputAndOutput(const Arguments& args, const std::string& command, const std::string& what) {
+    std::error_code error;
+    for (const std::string& path : args.positional)
+        if (std::filesystem::is_directory(path, error))
+            throw UsageError("'" + command + "' reads a folder (" + path + ") only with -o DIR (see 'drm help " +
+                             command + "')");
+    if (args.positional.size() > 2)
+        throw UsageError("'" + command + "' takes " + what + ", or inputs and -o DIR, but got " +
+                         std::to_string(args.positional.size()) + " names (see 'drm help " + command + "')");
+    args.expectPositional(2, 2, what + " (or inputs and -o DIR)");
+}
+
 std::vector<std::string> collectInputs(const std::vector<std::string>& paths,
                                        const std::function<bool(const std::string&)>& wanted, const std::string& kinds) {
     std::vector<std::string> files;

@@ -23,6 +23,11 @@ const std::vector<std::string>& batchOptionNames();
 // (at least 1). A malformed value is a UsageError.
 int jobsFrom(const Arguments& args);
 
+// Without -o: exactly IN and OUT, neither a folder. `what` names them for
+// the messages ("an input mesh and an output .drm file"). UsageError
+// otherwise.
+void expectInputAndOutput(const Arguments& args, const std::string& command, const std::string& what);
+
 // Files as given; each folder replaced by its regular files for which
 // `wanted(name)` holds, sorted by name (not recursive). Throws drm::Error when
 // a folder cannot be listed or the whole list is empty (`kinds` names what

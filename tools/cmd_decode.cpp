@@ -87,14 +87,7 @@ int runDecode(const std::vector<std::string>& args) {
         });
         return 0;
     }
-    std::error_code error;
-    for (const std::string& path : parsed.positional)
-        if (std::filesystem::is_directory(path, error))
-            throw UsageError("'decode' reads a folder (" + path + ") only with -o DIR (see 'drm help decode')");
-    if (parsed.positional.size() > 2)
-        throw UsageError("'decode' takes an input .drm file and an output .ply file, or inputs and -o DIR, but got " +
-                         std::to_string(parsed.positional.size()) + " names (see 'drm help decode')");
-    parsed.expectPositional(2, 2, "an input .drm file and an output .ply file (or inputs and -o DIR)");
+    expectInputAndOutput(parsed, "decode", "an input .drm file and an output .ply file");
     const std::string& input = parsed.positional[0];
     const std::string& output = parsed.positional[1];
     ProgressBar bar("decoding " + fileName(input));

@@ -118,14 +118,7 @@ int runEncode(const std::vector<std::string>& args) {
         return encodeMany(parsed, options);
     }
     jobsFrom(parsed);  // a malformed -j is an error even where it does not matter
-    std::error_code error;
-    for (const std::string& path : parsed.positional)
-        if (std::filesystem::is_directory(path, error))
-            throw UsageError("'encode' reads a folder (" + path + ") only with -o DIR (see 'drm help encode')");
-    if (parsed.positional.size() > 2)
-        throw UsageError("'encode' takes an input mesh and an output .drm file, or inputs and -o DIR, but got " +
-                         std::to_string(parsed.positional.size()) + " names (see 'drm help encode')");
-    parsed.expectPositional(2, 2, "an input mesh and an output .drm file (or inputs and -o DIR)");
+    expectInputAndOutput(parsed, "encode", "an input mesh and an output .drm file");
     const std::string& input = parsed.positional[0];
     const std::string& output = parsed.positional[1];
 
