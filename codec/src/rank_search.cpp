@@ -109,8 +109,10 @@ const std::vector<RankedVertex>& RankSearch::manyNearest(const FixedPoint& p, si
         return false;
     };
     size_t settleFrom = count;
+    uint64_t cellsVisited = 0;
     for (int ring = index_.firstRing(p);; ++ring) {
-        if (!index_.ringIsCheap(ring)) {
+        cellsVisited += VertexIndex::ringCellCount(ring);
+        if (cellsVisited > index_.cellBudget()) {
             candidates_.clear();
             nearby_.clear();
             index_.collectAll(nearby_);

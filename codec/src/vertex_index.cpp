@@ -7,7 +7,7 @@ namespace drm {
 namespace {
 
 constexpr uint32_t kRemoved = 0xFFFFFFFFu;
-constexpr int kMaxShift = 32;  // one cell spans any int32 range
+constexpr int kMaxShift = 26;  // coordinates span less than 2^26 (real grids: 2^21)
 
 // Mean vertices per occupied cell the cell size aims at. Around an edge the
 // predictor looks about two edge lengths away and the rank search about
@@ -27,8 +27,9 @@ int bitLength(uint64_t m) {
 
 int64_t floorShift(int64_t v, int s) { return v >= 0 ? v >> s : -((-v - 1) >> s) - 1; }
 
-// The cell size: about kTargetOccupancy vertices per occupied cell, with
-// the table of columns no larger than a few entries per vertex.
+// The cell size: about kTargetOccupancy vertices per occupied cell. Only
+// occupied columns and cells are stored, so a far outlier stretching the box
+// costs nothing: the cells still follow the vertices.
 int chooseCellShift(const std::vector<int32_t>& grid, int64_t origin, int64_t span) {
     const uint64_t n = grid.size() / 3;
     const int surveyShift = std::max(0, bitLength(uint64_t(span)) - kSurveyCellsPerAxisBits);
@@ -56,13 +57,6 @@ int chooseCellShift(const std::vector<int32_t>& grid, int64_t origin, int64_t sp
         cells = (cells + 3) / 4;
         ++shift;
     }
-    // Bounded column table, whatever the points (a tiny cluster with one
-    // far outlier asks for fine cells over a huge box).
-    while (shift < kMaxShift) {
-        const uint64_t perSide = (uint64_t(span) >> shift) + 1;
-        if (perSide * perSide <= 8 * n + 4096) break;
-        ++shift;
-    }
     return shift;
 }
 
@@ -77,23 +71,35 @@ VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
     shift_ = cellShift >= 0 ? std::min(cellShift, kMaxShift) : chooseCellShift(grid, origin_, span);
     cellWidth_ = int64_t(1) << shift_;
     lastCell_ = span >> shift_;
-    const size_t perSide = size_t(lastCell_ + 1);
 
-    // Vertices by column (counting sort), then by z within each column.
+    // Columns (x, y) numbered as they are first met, through the hash
+    // table; vertices by column (counting sort), then by z within each.
     auto cellOf = [&](int32_t coordinate) { return (int64_t(coordinate) - origin_) >> shift_; };
-    auto columnOf = [&](size_t v) { return size_t(cellOf(grid[3 * v])) * perSide + size_t(cellOf(grid[3 * v + 1])); };
-    std::vector<uint32_t> columnFirst(perSide * perSide + 1, 0);
-    for (size_t v = 0; v < n; ++v) ++columnFirst[columnOf(v) + 1];
+    columnBits_ = std::max(4, bitLength(2 * uint64_t(n) - 1));  // at least twice the columns: short probes
+    columnTable_.assign(size_t(1) << columnBits_, kNoColumn);
+    std::vector<uint32_t> columnOfVertex(n);
+    std::vector<uint32_t> columnFirst(1, 0);  // vertex counts, then prefix sums
+    for (size_t v = 0; v < n; ++v) {
+        const uint64_t key = columnKey(cellOf(grid[3 * v]), cellOf(grid[3 * v + 1]));
+        uint32_t& column = columnTable_[findColumnSlot(key)];
+        if (column == kNoColumn) {
+            column = uint32_t(columnKeys_.size());
+            columnKeys_.push_back(key);
+            columnFirst.push_back(0);
+        }
+        columnOfVertex[v] = column;
+        ++columnFirst[column + 1];
+    }
     for (size_t c = 1; c < columnFirst.size(); ++c) columnFirst[c] += columnFirst[c - 1];
     slots_.resize(n);
     {
         std::vector<uint32_t> fill(columnFirst.begin(), columnFirst.end() - 1);
-        for (size_t v = 0; v < n; ++v) slots_[fill[columnOf(v)]++] = uint32_t(v);
+        for (size_t v = 0; v < n; ++v) slots_[fill[columnOfVertex[v]]++] = uint32_t(v);
     }
     auto zCell = [&](uint32_t v) { return int32_t(cellOf(grid[3 * size_t(v) + 2])); };
-    columnStart_.resize(perSide * perSide + 1);
+    columnCells_.resize(columnKeys_.size() + 1);
     for (size_t column = 0; column + 1 < columnFirst.size(); ++column) {
-        columnStart_[column] = uint32_t(cellZ_.size());
+        columnCells_[column] = uint32_t(cellZ_.size());
         const auto begin = slots_.begin() + columnFirst[column], end = slots_.begin() + columnFirst[column + 1];
         std::sort(begin, end, [&](uint32_t a, uint32_t b) { return zCell(a) != zCell(b) ? zCell(a) < zCell(b) : a < b; });
         for (auto it = begin; it != end; ++it)
@@ -103,7 +109,7 @@ VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
                 cellPresent_.push_back(0);
             }
     }
-    columnStart_.back() = uint32_t(cellZ_.size());
+    columnCells_.back() = uint32_t(cellZ_.size());
     slotOf_.resize(n);
     cellOfVertex_.resize(n);
     for (size_t c = 0; c < cellStart_.size(); ++c) {
@@ -144,7 +150,7 @@ void VertexIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out)
     // rounding of q and radius cannot drop a vertex on its surface.
     const double reach = radius + 1.0;
     const double top = double(lastCell_ + 1) * double(int64_t(1) << shift_);
-    if (!(reach < top)) {  // also NaN
+    if (!(reach < top) || reach > double(int64_t(1) << 26)) {  // also NaN; squares stay within int64
         collectAll(out);
         return;
     }
@@ -184,12 +190,25 @@ int VertexIndex::firstRing(const FixedPoint& p) const {
     const CellCoord c = cellOfPoint(relative(p));
     int64_t ring = 0;
     for (int64_t x : {c.x, c.y, c.z}) ring = std::max({ring, -x, x - lastCell_});
-    return int(std::min<int64_t>(ring, int64_t(1) << 30));
+    return int(std::min<int64_t>(ring, int64_t(1) << 28));  // ringCellCount stays within 64 bits
 }
 
-bool VertexIndex::ringIsCheap(int ring) const {
-    const uint64_t cells = ring == 0 ? 1 : 24 * uint64_t(ring) * uint64_t(ring) + 2;
-    return cells <= 2 * present_.size() + 64;
+uint64_t VertexIndex::ringCellCount(int ring) {
+    return ring == 0 ? 1 : 24 * uint64_t(ring) * uint64_t(ring) + 2;
+}
+
+uint64_t VertexIndex::cellBudget() const { return 2 * uint64_t(present_.size()) + 64; }
+
+uint32_t VertexIndex::findColumn(int64_t x, int64_t y) const {
+    if (x < 0 || y < 0 || x > lastCell_ || y > lastCell_ || columnTable_.empty()) return kNoColumn;
+    return columnTable_[findColumnSlot(columnKey(x, y))];
+}
+
+size_t VertexIndex::findColumnSlot(uint64_t key) const {
+    const size_t mask = columnTable_.size() - 1;
+    size_t slot = size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - columnBits_));
+    while (columnTable_[slot] != kNoColumn && columnKeys_[columnTable_[slot]] != key) slot = (slot + 1) & mask;
+    return slot;
 }
 
 int64_t VertexIndex::clearance2(const FixedPoint& p, int ring) const {

@@ -4,8 +4,8 @@
 //
 // Every question is answered from the integer grid coordinates, so searches
 // need no tolerance. Only occupied cells are stored (a surface occupies a
-// vanishing share of a dense cell array), found through a dense table of
-// columns; the cell size is chosen from the data so that an occupied cell
+// vanishing share of a dense cell array), found through a hash table of
+// occupied columns; the cell size is chosen from the data so that an occupied cell
 // holds a few vertices: the searches around an edge then look at a few
 // dozen vertices.
 //
@@ -25,7 +25,8 @@ namespace drm {
 
 class VertexIndex {
 public:
-    // grid: x, y, z per vertex. Cells are
+    // grid: x, y, z per vertex, spanning less than 2^26 on each axis (real
+    // grids: [0, 2^21)), so squared fixed-point distances fit in int64. Cells are
     // 2^cellShift units wide; by default the size suits the data (tests
     // force others: no answer may depend on it).
     static constexpr int kChooseCellSize = -1;
@@ -45,7 +46,10 @@ public:
     // cell of p. Every present vertex outside rings 0..r lies at a squared
     // fixed-point distance of at least clearance2(p, r) from p.
     int firstRing(const FixedPoint& p) const;  // rings before it hold no cell of the grid
-    bool ringIsCheap(int ring) const;          // else scan everything with collectAll
+    // Cells in ring r; once the rings visited add up to more than the
+    // budget, scanning every present vertex (collectAll) is cheaper.
+    static uint64_t ringCellCount(int ring);
+    uint64_t cellBudget() const;
     // Calls visit(first, count) with the present vertices of each cell of
     // the ring that has a point within squared fixed-point distance bound2
     // of p (cells farther away cannot hold anything nearer).
@@ -87,11 +91,11 @@ private:
     template <class Visit>
     void forEachCellOfColumn(const FixedPoint& p, int64_t x, int64_t y, int64_t z0, int64_t z1, bool capsOnly,
                              int64_t bound2, Visit& visit) const {
-        if (x < 0 || y < 0 || x > lastCell_ || y > lastCell_) return;
+        const uint32_t column = findColumn(x, y);
+        if (column == kNoColumn) return;
         const int64_t gx = gap(p.x, x), gy = gap(p.y, y), xy2 = gx * gx + gy * gy;
         if (xy2 > bound2) return;
-        const size_t column = size_t(x) * size_t(lastCell_ + 1) + size_t(y);
-        for (uint32_t c = columnStart_[column], end = columnStart_[column + 1]; c < end; ++c) {
+        for (uint32_t c = columnCells_[column], end = columnCells_[column + 1]; c < end; ++c) {
             const int64_t z = cellZ_[c];
             if (z > z1) break;
             if (z < z0 || (capsOnly && z != z0 && z != z1) || cellPresent_[c] == 0) continue;
@@ -104,12 +108,19 @@ private:
     int64_t cellWidth_ = 1;
     int64_t origin_ = 0;    // the smallest coordinate
     int64_t lastCell_ = -1; // cells per axis - 1
-    // Occupied cells in (x, y, z) order: those of column (x, y) are
-    // columnStart_[x * (lastCell_ + 1) + y] .. columnStart_[... + 1] - 1, by
-    // increasing z. A dense table of columns costs about as much as the
-    // cells themselves (a surface crosses most columns a few times) and
-    // finds a whole row of cells with one look-up.
-    std::vector<uint32_t> columnStart_;
+    // Occupied columns (x, y), found through an open-addressing table of
+    // their numbers; column i's cells are columnCells_[i] ..
+    // columnCells_[i + 1] - 1, by increasing z. Only occupied columns are
+    // stored, so the cells can be as fine as the vertices ask whatever the
+    // extent of the box.
+    static constexpr uint32_t kNoColumn = 0xFFFFFFFFu;
+    static uint64_t columnKey(int64_t x, int64_t y) { return (uint64_t(x) << 32) | uint64_t(y); }
+    uint32_t findColumn(int64_t x, int64_t y) const;  // kNoColumn if empty or outside
+    size_t findColumnSlot(uint64_t key) const;
+    std::vector<uint32_t> columnTable_;
+    int columnBits_ = 0;
+    std::vector<uint64_t> columnKeys_;
+    std::vector<uint32_t> columnCells_;
     std::vector<int32_t> cellZ_;
     // The vertices of cell c are slots_[cellStart_[c] ..
     // cellStart_[c] + cellPresent_[c]): present ones first.
@@ -155,8 +166,10 @@ void VertexIndex::nearestFew(const FixedPoint& p, size_t count, Distance distanc
             if (out.size() == count) bound = out.back().first;
         }
     };
+    uint64_t cellsVisited = 0;
     for (int ring = firstRing(p);; ++ring) {
-        if (!ringIsCheap(ring)) {  // far from everything left: look at everything
+        cellsVisited += ringCellCount(ring);
+        if (cellsVisited > cellBudget()) {  // far from everything left: look at everything
             out.clear();
             bound = INT64_MAX;
             scratch.clear();

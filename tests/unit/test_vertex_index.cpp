@@ -112,5 +112,43 @@ TEST(VertexIndex, NearestAgreesWithBruteForceAtEveryCellSize) {
     }
 }
 
+// Ties everywhere: a small integer lattice, queries on lattice points and
+// half-steps, so that vertices sit exactly at the distances where a search
+// decides to stop; a far outlier stretches the box (cells must still follow
+// the cluster); cell sizes from one unit to beyond the box.
+TEST(VertexIndex, TiesAndAFarOutlierAtEveryCellSize) {
+    std::vector<int32_t> grid;
+    for (int x = 0; x < 9; ++x)
+        for (int y = 0; y < 9; ++y)
+            for (int z = 0; z < 3; ++z) grid.insert(grid.end(), {x * 2, y * 2, z * 2});
+    grid.insert(grid.end(), {(1 << 21) - 1, (1 << 21) - 1, (1 << 21) - 1});
+    const uint32_t n = uint32_t(grid.size() / 3);
+    for (int shift : {VertexIndex::kChooseCellSize, 0, 1, 2, 3, 5, 22, 26}) {
+        VertexIndex index(grid, shift);
+        Traversal traversal(n, 4, nullptr);
+        Admissibility admissible(traversal, false);
+        RankSearch search(grid, index, admissible);
+        for (int qx = -1; qx <= 17; qx += 3)
+            for (int qy = 0; qy <= 16; qy += 5)
+                for (int qz = -2; qz <= 5; ++qz) {
+                    const Vec3 c{qx * 0.5 + (qz & 1), qy * 1.0, qz * 1.0};
+                    const FixedPoint p = snapPrediction(c, 21);
+                    const OpenEdge edge{0, 1, 2};
+                    std::vector<RankedVertex> all;
+                    for (uint32_t v = 2; v < n; ++v) all.emplace_back(squaredDistance(grid, v, p), v);
+                    std::sort(all.begin(), all.end());
+                    for (size_t count : {size_t(1), size_t(3), size_t(8), size_t(30)}) {
+                        const std::vector<RankedVertex> want(all.begin(), all.begin() + std::min(count, all.size()));
+                        EXPECT_EQ(search.nearest(p, count, edge), want) << "shift " << shift << " count " << count;
+                    }
+                    std::vector<uint32_t> found;
+                    index.collectNear(c, 3.0, found);
+                    const std::set<uint32_t> got(found.begin(), found.end());
+                    for (uint32_t v = 0; v < n; ++v)
+                        if (norm2(gridPoint(grid, v) - c) <= 9.0) EXPECT_EQ(got.count(v), 1u) << "shift " << shift;
+                }
+    }
+}
+
 }  // namespace
 }  // namespace drm
