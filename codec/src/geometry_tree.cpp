@@ -137,7 +137,7 @@ struct AxisModels {
     BitModel zero[kMagnitudeContexts];
     BitModel longer[kMagnitudeContexts][kMaxLength];  // unary bit length: "longer than k"
     BitModel sign;
-    BitModel low[kMaxLength][kAdaptiveLowBits];
+    BitModel low[kMaxLength + 1][kAdaptiveLowBits];  // by bit length, 1..kMaxLength
 };
 
 // A residual: zero or not, the bit length n >= 1 in unary, the sign, then
