@@ -280,8 +280,8 @@ drm::Mesh everythingAtOnce() {
 
 }  // namespace
 
-std::vector<AdversarialMesh> adversarialMeshes() {
-    return {
+const std::vector<AdversarialMesh>& adversarialMeshes() {
+    static const std::vector<AdversarialMesh> all = {
         // Clean controls.
         {"tetrahedron", drm_test::tetrahedron(), Repair::None},
         {"icosphere", drm_test::icosphere(2), Repair::None},
@@ -312,6 +312,7 @@ std::vector<AdversarialMesh> adversarialMeshes() {
         {"single_point_face", singlePointFace(), Repair::LooseFaces},
         {"everything_at_once", everythingAtOnce(), Repair::Some},
     };
+    return all;
 }
 
 }  // namespace adversarial

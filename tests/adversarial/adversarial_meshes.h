@@ -28,7 +28,8 @@ struct AdversarialMesh {
     Repair repair;
 };
 
-std::vector<AdversarialMesh> adversarialMeshes();
+// Built once, shared by every test that walks them.
+const std::vector<AdversarialMesh>& adversarialMeshes();
 
 }  // namespace adversarial
 

@@ -16,43 +16,47 @@ struct NamedOptions {
     drm::EncodeOptions options;
 };
 
-inline std::vector<NamedOptions> adversarialOptions() {
-    std::vector<NamedOptions> sets;
-    auto add = [&](const std::string& name, auto change) {
-        drm::EncodeOptions o;
-        change(o);
-        sets.push_back({name, o});
-    };
-    add("default", [](drm::EncodeOptions&) {});
-    add("keep_order", [](drm::EncodeOptions& o) { o.keepVertexOrder = true; });
-    add("raw", [](drm::EncodeOptions& o) { o.geometry = drm::GeometryCoder::Raw; });
-    add("raw_bits4", [](drm::EncodeOptions& o) {
-        o.geometry = drm::GeometryCoder::Raw;
-        o.bits = 4;
-    });
-    add("bits4", [](drm::EncodeOptions& o) { o.bits = 4; });
-    add("bits1_keep_order", [](drm::EncodeOptions& o) {
-        o.bits = 1;
-        o.keepVertexOrder = true;
-    });
-    add("refine_k2", [](drm::EncodeOptions& o) {
-        o.geometry = drm::GeometryCoder::Refine;
-        o.refineBits = 2;
-    });
-    add("refine_bits4_k3", [](drm::EncodeOptions& o) {  // the connectivity is ranked on a 1-bit grid
-        o.geometry = drm::GeometryCoder::Refine;
-        o.bits = 4;
-        o.refineBits = 3;
-    });
-    add("refine_auto_keep_order", [](drm::EncodeOptions& o) {
-        o.geometry = drm::GeometryCoder::Refine;
-        o.keepVertexOrder = true;
-    });
-    add("paper_method", [](drm::EncodeOptions& o) {
-        o.levers = drm::Levers::none();
-        o.tryWithoutLevers = false;
-    });
-    return sets;
+// Built once, shared by every test that walks them.
+inline const std::vector<NamedOptions>& adversarialOptions() {
+    static const std::vector<NamedOptions> all = [] {
+        std::vector<NamedOptions> sets;
+        auto add = [&](const std::string& name, auto change) {
+            drm::EncodeOptions o;
+            change(o);
+            sets.push_back({name, o});
+        };
+        add("default", [](drm::EncodeOptions&) {});
+        add("keep_order", [](drm::EncodeOptions& o) { o.keepVertexOrder = true; });
+        add("raw", [](drm::EncodeOptions& o) { o.geometry = drm::GeometryCoder::Raw; });
+        add("raw_bits4", [](drm::EncodeOptions& o) {
+            o.geometry = drm::GeometryCoder::Raw;
+            o.bits = 4;
+        });
+        add("bits4", [](drm::EncodeOptions& o) { o.bits = 4; });
+        add("bits1_keep_order", [](drm::EncodeOptions& o) {
+            o.bits = 1;
+            o.keepVertexOrder = true;
+        });
+        add("refine_k2", [](drm::EncodeOptions& o) {
+            o.geometry = drm::GeometryCoder::Refine;
+            o.refineBits = 2;
+        });
+        add("refine_bits4_k3", [](drm::EncodeOptions& o) {  // the connectivity is ranked on a 1-bit grid
+            o.geometry = drm::GeometryCoder::Refine;
+            o.bits = 4;
+            o.refineBits = 3;
+        });
+        add("refine_auto_keep_order", [](drm::EncodeOptions& o) {
+            o.geometry = drm::GeometryCoder::Refine;
+            o.keepVertexOrder = true;
+        });
+        add("paper_method", [](drm::EncodeOptions& o) {
+            o.levers = drm::Levers::none();
+            o.tryWithoutLevers = false;
+        });
+        return sets;
+    }();
+    return all;
 }
 
 // drm.h: the raw coder and keepVertexOrder keep the input vertex order.

@@ -14,20 +14,10 @@
 namespace adversarial {
 namespace {
 
-const std::vector<AdversarialMesh>& meshes() {
-    static const std::vector<AdversarialMesh> all = adversarialMeshes();
-    return all;
-}
-
-const std::vector<NamedOptions>& optionSets() {
-    static const std::vector<NamedOptions> all = adversarialOptions();
-    return all;
-}
-
 class AdversarialRoundTrip : public ::testing::TestWithParam<std::tuple<size_t, size_t>> {
 protected:
-    const AdversarialMesh& mesh() const { return meshes()[std::get<0>(GetParam())]; }
-    const drm::EncodeOptions& options() const { return optionSets()[std::get<1>(GetParam())].options; }
+    const AdversarialMesh& mesh() const { return adversarialMeshes()[std::get<0>(GetParam())]; }
+    const drm::EncodeOptions& options() const { return adversarialOptions()[std::get<1>(GetParam())].options; }
 };
 
 TEST_P(AdversarialRoundTrip, DecodesToTheInput) {
@@ -43,11 +33,11 @@ TEST_P(AdversarialRoundTrip, DecodesToTheInput) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, AdversarialRoundTrip,
-                         ::testing::Combine(::testing::Range<size_t>(0, meshes().size()),
-                                            ::testing::Range<size_t>(0, optionSets().size())),
+                         ::testing::Combine(::testing::Range<size_t>(0, adversarialMeshes().size()),
+                                            ::testing::Range<size_t>(0, adversarialOptions().size())),
                          [](const ::testing::TestParamInfo<std::tuple<size_t, size_t>>& info) {
-                             return meshes()[std::get<0>(info.param)].name + "__" +
-                                    optionSets()[std::get<1>(info.param)].name;
+                             return adversarialMeshes()[std::get<0>(info.param)].name + "__" +
+                                    adversarialOptions()[std::get<1>(info.param)].name;
                          });
 
 }  // namespace

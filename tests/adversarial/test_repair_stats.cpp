@@ -20,16 +20,6 @@
 namespace adversarial {
 namespace {
 
-const std::vector<AdversarialMesh>& meshes() {
-    static const std::vector<AdversarialMesh> all = adversarialMeshes();
-    return all;
-}
-
-const std::vector<NamedOptions>& optionSets() {
-    static const std::vector<NamedOptions> all = adversarialOptions();
-    return all;
-}
-
 uint64_t repairCount(const drm::Stats& s) { return s.splitVertices + s.flippedFaces + s.repeatedFaces + s.looseFaces; }
 
 // Canonical faces of the mesh, in input order: those over an earlier face's
@@ -57,10 +47,10 @@ SetAsideFaces setAsideFaces(const drm::Mesh& mesh) {
 class RepairStats : public ::testing::TestWithParam<std::tuple<size_t, size_t>> {
 protected:
     void SetUp() override {
-        encoded_ = drm::encode(mesh().mesh, optionSets()[std::get<1>(GetParam())].options);
+        encoded_ = drm::encode(mesh().mesh, adversarialOptions()[std::get<1>(GetParam())].options);
         decoded_ = drm::decode(encoded_.bytes);
     }
-    const AdversarialMesh& mesh() const { return meshes()[std::get<0>(GetParam())]; }
+    const AdversarialMesh& mesh() const { return adversarialMeshes()[std::get<0>(GetParam())]; }
 
     drm::Encoded encoded_;
     drm::Decoded decoded_;
@@ -136,11 +126,11 @@ TEST_P(RepairStats, DecodesRepeatedAndLooseFacesLast) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, RepairStats,
-                         ::testing::Combine(::testing::Range<size_t>(0, meshes().size()),
-                                            ::testing::Range<size_t>(0, optionSets().size())),
+                         ::testing::Combine(::testing::Range<size_t>(0, adversarialMeshes().size()),
+                                            ::testing::Range<size_t>(0, adversarialOptions().size())),
                          [](const ::testing::TestParamInfo<std::tuple<size_t, size_t>>& info) {
-                             return meshes()[std::get<0>(info.param)].name + "__" +
-                                    optionSets()[std::get<1>(info.param)].name;
+                             return adversarialMeshes()[std::get<0>(info.param)].name + "__" +
+                                    adversarialOptions()[std::get<1>(info.param)].name;
                          });
 
 // The repair each mesh declares is the one its defects call for, as
@@ -148,7 +138,7 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RepairStats,
 class DeclaredRepair : public ::testing::TestWithParam<size_t> {};
 
 TEST_P(DeclaredRepair, MatchesTheMeshDefects) {
-    const AdversarialMesh& m = meshes()[GetParam()];
+    const AdversarialMesh& m = adversarialMeshes()[GetParam()];
     const MeshDefects defects = findDefects(m.mesh);
     switch (m.repair) {
     case Repair::None:
@@ -172,8 +162,8 @@ TEST_P(DeclaredRepair, MatchesTheMeshDefects) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, DeclaredRepair, ::testing::Range<size_t>(0, meshes().size()),
-                         [](const ::testing::TestParamInfo<size_t>& info) { return meshes()[info.param].name; });
+INSTANTIATE_TEST_SUITE_P(Meshes, DeclaredRepair, ::testing::Range<size_t>(0, adversarialMeshes().size()),
+                         [](const ::testing::TestParamInfo<size_t>& info) { return adversarialMeshes()[info.param].name; });
 
 }  // namespace
 }  // namespace adversarial
