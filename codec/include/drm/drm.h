@@ -16,6 +16,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace drm {
@@ -29,13 +30,65 @@ public:
 
 // An indexed triangle mesh: xyz per vertex, three vertex indices per face.
 // Faces are oriented: (a, b, c) and (a, c, b) are different triangles.
+//
+// Every attribute array is optional: empty means the mesh does not carry
+// it; otherwise it holds exactly the size given (encode() refuses any other
+// size). Per-corner arrays follow the faces: corner k of face f is entry
+// 3 * f + k. docs/format.md says how each is coded and what comes back.
 struct Mesh {
     std::vector<float> positions;     // 3 * vertexCount()
     std::vector<uint32_t> triangles;  // 3 * faceCount()
 
+    // Per vertex.
+    std::vector<uint8_t> colors;      // 4 per vertex: red, green, blue, alpha (exact)
+    std::vector<float> normals;       // 3 per vertex (quantized: EncodeOptions::normalBits)
+    std::vector<float> texCoords;     // 2 per vertex: u, v (quantized: EncodeOptions::uvBits)
+    std::vector<float> quality;       // 1 per vertex (exact, bit for bit)
+    // Per corner (wedge): values that differ between the faces around a
+    // vertex, such as texture coordinates across a seam.
+    std::vector<float> cornerTexCoords;  // 6 per face: u, v of each corner
+    std::vector<float> cornerNormals;    // 9 per face: xyz of each corner
+    // Per face.
+    std::vector<uint8_t> faceColors;     // 4 per face: red, green, blue, alpha (exact)
+    std::vector<float> faceQuality;      // 1 per face (exact, bit for bit)
+    std::vector<uint32_t> faceMaterial;  // 1 per face: index into materials
+    std::vector<uint32_t> faceTexture;   // 1 per face: index into textures (MeshLab's wedge texture index)
+    // Names, kept as given.
+    std::vector<std::string> materials;  // material names (OBJ usemtl)
+    std::vector<std::string> textures;   // texture file names (PLY TextureFile, MeshLab's texture list)
+    // Other named strings a file format needs back, e.g. "obj.mtllib" (the
+    // material library's file name) and "obj.mtl" (its text).
+    std::vector<std::pair<std::string, std::string>> metadata;
+
     size_t vertexCount() const { return positions.size() / 3; }
     size_t faceCount() const { return triangles.size() / 3; }
+    // True if any attribute array, name list or metadata entry is non-empty.
+    bool hasAttributes() const;
 };
+
+// The attributes a file can carry, as bits of EncodeOptions::attributes.
+enum AttributeBits : uint32_t {
+    kAttrColors = 1u << 0,
+    kAttrNormals = 1u << 1,
+    kAttrTexCoords = 1u << 2,
+    kAttrQuality = 1u << 3,
+    kAttrCornerTexCoords = 1u << 4,
+    kAttrCornerNormals = 1u << 5,
+    kAttrFaceColors = 1u << 6,
+    kAttrFaceQuality = 1u << 7,
+    kAttrFaceMaterial = 1u << 8,  // with the material names
+    kAttrFaceTexture = 1u << 9,   // with the texture names
+    kAttrMetadata = 1u << 10,
+    kAttrAll = (1u << 11) - 1,
+};
+// "colors,normals,texcoords,quality,corner-texcoords,corner-normals,
+// face-colors,face-quality,materials,textures,metadata" (those set), "all" or
+// "none"; parseAttributes accepts those names and "all"/"none" and throws
+// Error on anything else.
+std::string attributesName(uint32_t bits);
+uint32_t parseAttributes(const std::string& list);
+// The attributes a mesh carries, as AttributeBits.
+uint32_t attributesOf(const Mesh& mesh);
 
 // Which apex predictor the traversal uses (paper, Section 3.2).
 enum class Predictor : uint8_t {
@@ -109,6 +162,25 @@ struct EncodeOptions {
     // section), so decoded vertices keep their input indices.
     bool keepVertexOrder = false;
     Levers levers;
+    // Which of the mesh's attributes the file keeps (AttributeBits); those
+    // not kept are simply left out.
+    uint32_t attributes = kAttrAll;
+    // Normals: octahedral quantization with this many bits per coordinate
+    // (4..16). 10 keeps every normal within 0.2 degrees.
+    int normalBits = 10;
+    // Texture coordinates: a square grid over their range with 2^uvBits - 1
+    // steps across the wider axis (1..24).
+    int uvBits = 12;
+    // Meshes exported with a vertex per corner (every face on its own
+    // vertices, positions repeated): Weld::Auto merges vertices on the same
+    // grid point for the connectivity when at least a third of the vertices
+    // repeat another's grid point and the mesh carries per-vertex
+    // attributes; their values then become per-corner values. The decoded
+    // mesh has one vertex per distinct (grid point, attribute values), so
+    // every corner comes back with its attributes. Off never welds (each
+    // vertex is kept), On always does.
+    enum class Weld : uint8_t { Auto = 0, Off = 1, On = 2 };
+    Weld weld = Weld::Auto;
     // Below 20000 faces, also encode with no levers and keep the smaller
     // file: on tiny regular meshes (a 288-vertex torus) learning the levers'
     // contexts can cost a byte or two more than it saves.
@@ -148,6 +220,15 @@ struct Stats {
     uint64_t flippedFaces = 0;
     uint64_t repeatedFaces = 0;
     uint64_t looseFaces = 0;
+    // Attribute sections, one entry per section in file order: its name (as
+    // attributesName gives it, e.g. "normals") and its payload size.
+    struct AttributeSize {
+        std::string name;
+        uint64_t bytes = 0;
+    };
+    std::vector<AttributeSize> attributeSizes;
+    uint64_t attributeBytes = 0;    // all attribute sections, framing included
+    uint64_t weldedVertices = 0;    // input vertices merged into another (Weld)
     // rankHistogram[r] = number of rank codes equal to r (r = 0: boundary edge).
     std::vector<uint64_t> rankHistogram;
 
@@ -183,6 +264,10 @@ struct Encoded {
     // component's start triangle, which is stored in the header, not ranked,
     // and for faces repeating a vertex or another face, which are not ranked.
     std::vector<uint32_t> faceRank;
+    // faceOrder[i] = input face that decoded face i is, and faceRotation[i]
+    // the corner of that input face the decoded face starts at (0..2).
+    std::vector<uint32_t> faceOrder;
+    std::vector<uint8_t> faceRotation;
 };
 
 // Decoded faces come in traversal order, then the faces that repeat an
