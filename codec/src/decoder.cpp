@@ -4,6 +4,8 @@
 #include <memory>
 #include <string>
 
+#include "attribute_sections.h"
+#include "decoder.h"
 #include "file_format.h"
 #include "geometry_raw.h"
 #include "geometry_refine.h"
@@ -19,10 +21,11 @@
 
 namespace drm {
 
-Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallback) {
+Decoded decodeCore(const uint8_t* data, size_t size, const Progress& progressCallback, FileParts* partsOut) {
     ProgressReporter progress(progressCallback);
     progress.stage("reading", 0.0);
-    const FileParts parts = readFile(data, size);
+    FileParts& parts = *partsOut;
+    parts = readFile(data, size);
     const FileHeader& header = parts.header;
 
     Decoded result;
@@ -128,18 +131,7 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
         repairs->readAfterTraversal(faceCount);
         const Repairs& r = repairs->repairs();
         std::vector<uint32_t>& t = result.mesh.triangles;
-        for (uint32_t& v : t)
-            if (v >= vertexCount) v = copyOf[v - vertexCount];
-        for (size_t f = 0; f < faceCount; ++f)
-            if (r.flipped[f]) std::swap(t[3 * f + 1], t[3 * f + 2]);
-        t.reserve(3 * size_t(header.faceCount));
-        for (size_t i = 0; i < duplicateCount; ++i) {
-            const size_t f = r.duplicateOf[i];
-            const uint32_t a = t[3 * f], b = t[3 * f + 1], c = t[3 * f + 2];
-            if (r.duplicateReversed[i]) t.insert(t.end(), {a, c, b});
-            else t.insert(t.end(), {a, b, c});
-        }
-        t.insert(t.end(), r.looseTriangles.begin(), r.looseTriangles.end());
+        undoCut(t, r, vertexCount);
         stats.flippedFaces = uint64_t(std::count(r.flipped.begin(), r.flipped.end(), 1));
         stats.repeatedFaces = duplicateCount;
         result.faceRank.resize(t.size() / 3, 0);
@@ -154,11 +146,17 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progressCallbac
         result.quantized.swap(inInputOrder);
         for (uint32_t& v : result.mesh.triangles) v = order[v];
     }
-    result.mesh.positions.resize(result.quantized.size());
-    for (size_t i = 0; i < result.quantized.size(); ++i)
-        result.mesh.positions[i] = float(header.grid.origin[i % 3] + double(result.quantized[i]) * header.grid.step);
+    if (!parts.attributes.empty()) {
+        progress.stage("decoding attributes", 0.97);
+        decodeAttributeSections(parts, result);
+        stats.attributeBytes = parts.attributeBytes;
+    }
+    size_t badVertex = 0;
+    if (!dequantize(result.quantized, header.grid, result.mesh.positions, &badVertex))
+        throw Error("corrupt file: vertex " + std::to_string(badVertex) +
+                    " lies outside the range of single-precision floats");
 
-    stats.vertices = vertexCount;
+    stats.vertices = result.mesh.vertexCount();  // the file's vertices, or the split ones of a welded mesh
     stats.faces = header.faceCount;
     stats.components = components;
     stats.boundaryEdges = stats.rankHistogram.empty() ? 0 : stats.rankHistogram[0];

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "encoder.h"
 #include "file_format.h"
 #include "geometry_raw.h"
 #include "geometry_refine.h"
@@ -53,9 +54,10 @@ struct PreparedMesh {
     bool repaired = false;
 };
 
-Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeOptions& options,
+Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeOptions& options,
                    ProgressReporter& progress) {
-    Encoded result;
+    Attempt attempt;
+    Encoded& result = attempt.encoded;
     result.grid = prepared.grid;
     result.quantized = prepared.quantized;
     result.vertexOrder = prepared.order;
@@ -158,7 +160,24 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
                                      prepared.geometry);
     }
     const std::vector<uint8_t>& geometry = prepared.lowBits > 0 ? refined : prepared.geometry;
-    result.bytes = writeFile(header, connectivity, geometry, vertexOrder, repairs, &headerBytes);
+    result.bytes = writeFile(header, connectivity, geometry, vertexOrder, repairs, {}, &headerBytes);
+    // The faces as the decoder will give them back.
+    attempt.decodedTriangles = traversal.triangles();
+    if (prepared.repaired) {
+        Repairs inDecodedOrder = prepared.repairs;
+        for (size_t i = 0; i < faceCount; ++i) inDecodedOrder.flipped[i] = prepared.repairs.flipped[decodedFaceOrder[i]];
+        std::vector<uint32_t> positionOf(faceCount);
+        for (size_t i = 0; i < faceCount; ++i) positionOf[decodedFaceOrder[i]] = uint32_t(i);
+        for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
+        undoCut(attempt.decodedTriangles, inDecodedOrder, size_t(header.vertexCount));
+    }
+    if (options.keepVertexOrder)
+        for (uint32_t& v : attempt.decodedTriangles) v = prepared.order[v];
+    attempt.header = header;
+    attempt.connectivity = connectivity;
+    attempt.geometry = geometry;
+    attempt.vertexOrder = vertexOrder;
+    attempt.repairs = repairs;
 
     stats.vertices = header.vertexCount;
     stats.faces = header.faceCount;
@@ -180,12 +199,12 @@ Encoded encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     stats.looseFaces = looseCount;
     stats.repeatedFaces = duplicateCount;
     stats.totalBytes = result.bytes.size();
-    return result;
+    return attempt;
 }
 
 // Codes the vertex set with the given coder (lowBits > 0: Refine), numbers
 // the cut mesh in its decoded order and encodes the connectivity.
-Encoded encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const ManifoldCut& cut,
+Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const ManifoldCut& cut,
                            const EncodeOptions& options, int lowBits, ProgressReporter& progress) {
     progress.stage("coding vertices", 0.01);
     prepared.lowBits = lowBits;
@@ -254,25 +273,35 @@ Encoded encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
         progress.stage("choosing predictor", 0.04);
         prepared.predictor = countPredictorVotes(prepared.renumbered, prepared.topology, prepared.decodedGrid).winner();
     }
-    Encoded best = encodeOnce(prepared.renumbered, prepared, options, progress);
+    Attempt best = encodeOnce(prepared.renumbered, prepared, options, progress);
     const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
                           options.levers.confidenceContext || options.levers.angleOrder;
     if (options.tryWithoutLevers && anyLever && prepared.renumbered.faceCount() < kTryWithoutLeversBelowFaces) {
         EncodeOptions plain = options;
         plain.levers = Levers::none();
-        Encoded alternative = encodeOnce(prepared.renumbered, prepared, plain, progress);
-        if (alternative.bytes.size() < best.bytes.size()) best = std::move(alternative);
+        Attempt alternative = encodeOnce(prepared.renumbered, prepared, plain, progress);
+        if (alternative.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(alternative);
     }
     return best;
 }
 
 }  // namespace
 
-Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
-    ProgressReporter progress(options.progress);
+Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, ProgressReporter& progress,
+                           const Grid* grid) {
     PreparedMesh prepared;
     prepared.grid = makeGrid(mesh.positions, options.bits);  // checks bits, emptiness, finiteness
+    if (grid) prepared.grid = *grid;
     prepared.quantized = quantize(mesh.positions, prepared.grid);
+    {
+        // The decoder's own test of every decoded coordinate: a grid point
+        // rounding past FLT_MAX would make a file no reader opens.
+        std::vector<float> decodedPositions;
+        size_t badVertex = 0;
+        if (!dequantize(prepared.quantized, prepared.grid, decodedPositions, &badVertex))
+            throw Error("vertex " + std::to_string(badVertex) +
+                        " would decode outside the range of single-precision floats; scale the mesh down");
+    }
     progress.stage("checking mesh", 0.0);
     checkIndices(mesh);  // refuses with messages in the input's own indices
     // A mesh the traversal can take as it is needs no cut (the common case,
@@ -312,23 +341,19 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
                     std::to_string(std::min(kMaxRefineBits, options.bits - 1)) + " at " +
                     std::to_string(options.bits) + " bits");
     if (options.geometry != GeometryCoder::Refine || options.refineBits > 0) {
-        Encoded result = encodeWithGeometry(mesh, prepared, cut, options,
-                                            options.geometry == GeometryCoder::Refine ? options.refineBits : 0,
-                                            progress);
-        progress.stage("done", 1.0);
-        return result;
+        return encodeWithGeometry(mesh, prepared, cut, options,
+                                  options.geometry == GeometryCoder::Refine ? options.refineBits : 0, progress);
     }
     // Refine with the low bits left to the encoder: the spanning tree alone,
     // and 1 .. kMaxTriedRefineBits low bits (the sizes are not unimodal in
     // the low bits: plane-holes grows at 1 and 2, shrinks at 3 to 5).
     EncodeOptions tree = options;
     tree.geometry = GeometryCoder::SpanningTree;
-    Encoded best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
+    Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
     for (int lowBits = 1; lowBits <= std::min(kMaxTriedRefineBits, options.bits - 1); ++lowBits) {
-        Encoded refined = encodeWithGeometry(mesh, prepared, cut, options, lowBits, progress);
-        if (refined.bytes.size() < best.bytes.size()) best = std::move(refined);
+        Attempt refined = encodeWithGeometry(mesh, prepared, cut, options, lowBits, progress);
+        if (refined.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(refined);
     }
-    progress.stage("done", 1.0);
     return best;
 }
 

@@ -25,7 +25,7 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
                      (h.levers.gapClosing ? kFlagGapClosing : 0) |
                      (h.levers.confidenceContext ? kFlagConfidenceContext : 0) |
                      (h.levers.angleOrder ? kFlagAngleOrder : 0) | (h.keepsVertexOrder ? kFlagVertexOrder : 0) |
-                     (h.hasRepairs ? kFlagRepairs : 0)));
+                     (h.hasRepairs ? kFlagRepairs : 0) | (h.attributeSections > 0 ? kFlagAttributes : 0)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
     out.u8(uint8_t(h.connectivityCoder));
@@ -35,6 +35,7 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     out.varint(h.vertexCount);
     out.varint(h.faceCount);
     if (h.hasRepairs) out.varint(h.copyCount);
+    if (h.attributeSections > 0) out.varint(h.attributeSections);
     out.varint(h.startTriangles.size() / 3);
     for (uint32_t v : h.startTriangles) out.varint(v);
     return std::move(out.buffer());
@@ -68,22 +69,21 @@ FileHeader decodeHeader(ByteReader& in) {
     h.geometryCoder = GeometryCoder(geometry);
     for (double& o : h.grid.origin) o = in.f64("bounding box origin");
     h.grid.step = in.f64("grid step");
-    for (double o : h.grid.origin)
-        if (!std::isfinite(o)) throw Error("corrupt file: the bounding box origin is not finite");
-    if (!std::isfinite(h.grid.step) || !(h.grid.step > 0))
-        throw Error("corrupt file: the grid step is not a positive number");
-    for (double o : h.grid.origin) {
-        // Every decoded position (origin + q * step, as a float) must be finite.
-        const double far = o + double(gridMax(h.grid.bits)) * h.grid.step;
-        if (!std::isfinite(float(far)) || !std::isfinite(float(o)))
-            throw Error("corrupt file: the bounding box does not fit in single-precision floats");
-    }
-    h.vertexCount = in.count("vertex count", 0xFFFFFFFEull);
+    // Decoded coordinates are checked one by one as they are made: a box
+    // as wide as float's range holds (-2e38 .. 2e38 has an extent of 4e38),
+    // and only a grid point past FLT_MAX is refused.
+    const std::string gridFault = gridProblem(h.grid);
+    if (!gridFault.empty()) throw Error("corrupt file: " + gridFault);
+    h.vertexCount = in.count("vertex count", kMaxVertexCount);
     if (h.vertexCount == 0) throw Error("corrupt file: the vertex count is zero");
-    h.faceCount = in.count("face count", 0x55555554ull);
+    h.faceCount = in.count("face count", kMaxFaceCount);
     // A cut makes at most one copy per face corner.
     if (h.hasRepairs)
-        h.copyCount = in.count("vertex copy count", std::min<uint64_t>(3 * h.faceCount, 0xFFFFFFFEull - h.vertexCount));
+        h.copyCount = in.count("vertex copy count", std::min<uint64_t>(3 * h.faceCount, kMaxVertexCount - h.vertexCount));
+    if (flags & kFlagAttributes) {
+        h.attributeSections = in.count("attribute section count", kMaxAttributeSections);
+        if (h.attributeSections == 0) throw Error("corrupt file: the attribute flag is set with no attribute section");
+    }
     // Every start vertex takes at least one byte: the count is bounded by
     // what is left before anything is allocated.
     const uint64_t components = in.count("component count", std::min<uint64_t>(h.faceCount, in.remaining() / 3));
@@ -91,24 +91,60 @@ FileHeader decodeHeader(ByteReader& in) {
     for (uint32_t& v : h.startTriangles) v = uint32_t(in.count("start triangle vertex", h.vertexCount + h.copyCount - 1));
     if (in.remaining() != 0)
         throw Error("corrupt file: " + std::to_string(in.remaining()) + " unexpected bytes at the end of the header");
+    const std::string problem = headerProblem(h);
+    if (!problem.empty()) throw Error("corrupt file: the header holds " + problem);
     return h;
 }
 
 }  // namespace
 
+std::string headerProblem(const FileHeader& h) {
+    const std::string grid = gridProblem(h.grid);
+    if (!grid.empty()) return grid;
+    if (h.predictor != Predictor::Parallelogram && h.predictor != Predictor::Midpoint)
+        return "unknown predictor " + std::to_string(int(h.predictor));
+    if (h.geometryCoder != GeometryCoder::Raw && h.geometryCoder != GeometryCoder::SpanningTree &&
+        h.geometryCoder != GeometryCoder::Refine)
+        return "unknown geometry coder " + std::to_string(int(h.geometryCoder));
+    if (h.vertexCount == 0 || h.vertexCount > kMaxVertexCount)
+        return std::to_string(h.vertexCount) + " vertices (a file holds 1 to " + std::to_string(kMaxVertexCount) + ")";
+    if (h.faceCount > kMaxFaceCount)
+        return std::to_string(h.faceCount) + " faces (a file holds at most " + std::to_string(kMaxFaceCount) + ")";
+    if (h.copyCount > std::min<uint64_t>(3 * h.faceCount, kMaxVertexCount - h.vertexCount) ||
+        (!h.hasRepairs && h.copyCount != 0))
+        return std::to_string(h.copyCount) + " vertex copies for " + std::to_string(h.vertexCount) + " vertices and " +
+               std::to_string(h.faceCount) + " faces";
+    if (h.attributeSections > kMaxAttributeSections)
+        return std::to_string(h.attributeSections) + " attribute sections (at most " +
+               std::to_string(kMaxAttributeSections) + ")";
+    if (h.startTriangles.size() % 3 != 0 || h.startTriangles.size() / 3 > h.faceCount)
+        return "more components than faces";
+    for (uint32_t v : h.startTriangles)
+        if (v >= h.vertexCount + h.copyCount) return "a start triangle refers to vertex " + std::to_string(v);
+    return "";
+}
+
 std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
                                const std::vector<uint8_t>& geometry, const std::vector<uint8_t>& vertexOrder,
-                               const std::vector<uint8_t>& repairs, size_t* headerBytes) {
+                               const std::vector<uint8_t>& repairs,
+                               const std::vector<std::vector<uint8_t>>& attributes, size_t* headerBytes) {
+    FileHeader withCount = header;
+    withCount.attributeSections = attributes.size();
+    // Never a file the reader refuses: the reader's own test of the header.
+    const std::string problem = headerProblem(withCount);
+    if (!problem.empty()) throw Error("cannot encode this mesh: the file would hold " + problem);
     ByteWriter out;
     out.bytes(kSignature, sizeof kSignature);
     out.u16(kFormatVersion);
-    writeSection(out, encodeHeader(header));
+    writeSection(out, encodeHeader(withCount));
     writeSection(out, connectivity);
     writeSection(out, geometry);
     if (header.keepsVertexOrder) writeSection(out, vertexOrder);
     if (header.hasRepairs) writeSection(out, repairs);
+    const size_t beforeAttributes = out.size();
+    for (const std::vector<uint8_t>& a : attributes) writeSection(out, a);
     if (headerBytes)
-        *headerBytes = out.size() - connectivity.size() - geometry.size() -
+        *headerBytes = beforeAttributes - connectivity.size() - geometry.size() -
                        (header.keepsVertexOrder ? vertexOrder.size() : 0) - (header.hasRepairs ? repairs.size() : 0);
     return std::move(out.buffer());
 }
@@ -145,9 +181,17 @@ FileParts readFile(const uint8_t* data, size_t size) {
     section("geometry", &parts.geometry, &parts.geometrySize);
     if (parts.header.keepsVertexOrder) section("vertex order", &parts.vertexOrder, &parts.vertexOrderSize);
     if (parts.header.hasRepairs) section("repairs", &parts.repairs, &parts.repairsSize);
+    const size_t beforeAttributes = file.offset();
+    for (uint64_t a = 0; a < parts.header.attributeSections; ++a) {
+        FileParts::Payload payload{nullptr, 0};
+        section("attribute " + std::to_string(a), &payload.data, &payload.size);
+        parts.attributes.push_back(payload);
+    }
+    parts.attributeBytes = file.offset() - beforeAttributes;
     if (file.remaining() != 0)
         throw Error("corrupt file: " + std::to_string(file.remaining()) + " unexpected bytes after the last section");
-    parts.headerBytes = size - parts.connectivitySize - parts.geometrySize - parts.vertexOrderSize - parts.repairsSize;
+    parts.headerBytes = size - parts.connectivitySize - parts.geometrySize - parts.vertexOrderSize - parts.repairsSize -
+                        parts.attributeBytes;
     return parts;
 }
 

@@ -5,6 +5,7 @@
 #define DRM_FILE_FORMAT_H
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "drm/drm.h"
@@ -23,7 +24,9 @@ constexpr uint16_t kFlagConfidenceContext = 8;
 constexpr uint16_t kFlagAngleOrder = 16;
 constexpr uint16_t kFlagVertexOrder = 32;  // a fourth section holds the input vertex order
 constexpr uint16_t kFlagRepairs = 64;      // a repairs section undoes a manifold cut (repair_section.h)
-constexpr uint16_t kKnownFlags = 127;
+constexpr uint16_t kFlagAttributes = 128;  // attribute sections follow (attribute_sections.h)
+constexpr uint16_t kKnownFlags = 255;
+constexpr uint64_t kMaxAttributeSections = 32;
 
 struct FileHeader {
     uint64_t vertexCount = 0;
@@ -39,6 +42,8 @@ struct FileHeader {
     // the traversal are copies (listed in the repairs section).
     bool hasRepairs = false;
     uint64_t copyCount = 0;
+    // With attributes: how many attribute sections follow the others.
+    uint64_t attributeSections = 0;
     std::vector<uint32_t> startTriangles;  // 3 vertex indices per component
 };
 
@@ -52,14 +57,29 @@ struct FileParts {
     size_t vertexOrderSize = 0;
     const uint8_t* repairs = nullptr;  // when header.hasRepairs
     size_t repairsSize = 0;
+    struct Payload {
+        const uint8_t* data;
+        size_t size;
+    };
+    std::vector<Payload> attributes;  // header.attributeSections of them
+    size_t attributeBytes = 0;        // the attribute sections, framing included
     size_t headerBytes = 0;  // everything but the payloads
 };
 
+constexpr uint64_t kMaxVertexCount = 0xFFFFFFFEull;  // indices are uint32, one value kept for "none"
+constexpr uint64_t kMaxFaceCount = 0x55555554ull;    // 3 * faces corners fit in uint32
+
+// What is wrong with a header, or "": the checks the reader makes on every
+// field, which writeFile makes before it writes anything.
+std::string headerProblem(const FileHeader& header);
+
 // vertexOrder is written iff header.keepsVertexOrder, then repairs iff
-// header.hasRepairs.
+// header.hasRepairs, then the attribute sections (their count and flag are
+// set from the list, whatever header says).
 std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
                                const std::vector<uint8_t>& geometry, const std::vector<uint8_t>& vertexOrder,
-                               const std::vector<uint8_t>& repairs, size_t* headerBytes);
+                               const std::vector<uint8_t>& repairs,
+                               const std::vector<std::vector<uint8_t>>& attributes, size_t* headerBytes);
 
 // Checks signature, version, section lengths and checksums, and every header
 // field's range; the payloads are returned as pointers into data.

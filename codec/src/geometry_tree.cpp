@@ -7,6 +7,7 @@
 
 
 #include "drm/drm.h"
+#include "bit_model.h"
 #include "quantize.h"
 #include "range_coder.h"
 #include "rank_coder.h"
@@ -52,78 +53,6 @@ private:
         uint32_t vertex, childrenLeft;
     };
     std::vector<Frame> frames_;
-};
-
-// An adaptive binary model: the probability of a 1 in 1/4096ths, mixed
-// from a fast and a slow estimate (the fast one follows local changes, the
-// slow one holds the long-run rate). Integer arithmetic only.
-class BitModel {
-public:
-    void encode(RangeEncoder& coder, int bit) {
-        const uint32_t p1 = probabilityOfOne();
-        if (bit) coder.encode(kOne - p1, p1, kOne);
-        else coder.encode(0, kOne - p1, kOne);
-        update(bit);
-    }
-    int decode(RangeDecoder& coder) {
-        const uint32_t p1 = probabilityOfOne();
-        const int bit = coder.decodeFreq(kOne) >= kOne - p1 ? 1 : 0;
-        if (bit) coder.consume(kOne - p1, p1, kOne);
-        else coder.consume(0, kOne - p1, kOne);
-        update(bit);
-        return bit;
-    }
-
-    // The encoder's estimate of the cost of coding `bit`, in bits.
-    double cost(int bit) const {
-        const uint32_t p1 = probabilityOfOne();
-        return costTable()[bit ? p1 : kOne - p1];
-    }
-
-private:
-    static const double* costTable() {
-        static const std::vector<double> table = [] {
-            std::vector<double> t(kOne + 1, 0.0);
-            for (uint32_t i = 1; i <= kOne; ++i) t[i] = -std::log2(double(i) / kOne);
-            return t;
-        }();
-        return table.data();
-    }
-    static constexpr uint32_t kOne = 1u << 12;
-    static constexpr int kFast = 4, kSlow = 7;
-    uint32_t probabilityOfOne() const {
-        const uint32_t p = (fast_ + slow_) >> 5;  // two 16-bit estimates to 12 bits
-        return std::min(std::max(p, 1u), kOne - 1);
-    }
-    void update(int bit) {
-        if (bit) {
-            fast_ += (65536 - fast_) >> kFast;
-            slow_ += (65536 - slow_) >> kSlow;
-        } else {
-            fast_ -= fast_ >> kFast;
-            slow_ -= slow_ >> kSlow;
-        }
-    }
-    uint32_t fast_ = 32768, slow_ = 32768;
-};
-
-// Encoder and decoder run the same coding functions through one of these:
-// the writer codes the value it is given and returns it, the reader ignores
-// it and returns what it decodes. So both sides take every decision in the
-// same code.
-struct Writer {
-    RangeEncoder& coder;
-    static constexpr bool kEncoding = true;
-    int bit(BitModel& m, int b) { m.encode(coder, b); return b; }
-    uint32_t plain(uint32_t v, int count) { coder.encodeWideBits(v, count); return v & uint32_t((uint64_t(1) << count) - 1); }
-    uint32_t symbol(AdaptiveFrequencies& m, uint32_t s) { m.encode(coder, s); return s; }
-};
-struct Reader {
-    RangeDecoder& coder;
-    static constexpr bool kEncoding = false;
-    int bit(BitModel& m, int) { return m.decode(coder); }
-    uint32_t plain(uint32_t, int count) { return uint32_t(coder.decodeWideBits(count)); }
-    uint32_t symbol(AdaptiveFrequencies& m, uint32_t) { return m.decode(coder); }
 };
 
 uint32_t magnitudeOf(int32_t v) { return uint32_t(v < 0 ? -int64_t(v) : v); }

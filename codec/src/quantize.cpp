@@ -36,6 +36,28 @@ Grid makeGrid(const std::vector<float>& positions, int bits) {
     return grid;
 }
 
+std::string gridProblem(const Grid& grid) {
+    if (grid.bits < kMinBits || grid.bits > kMaxBits)
+        return "quantization bits " + std::to_string(grid.bits) + " out of range " + std::to_string(kMinBits) + ".." +
+               std::to_string(kMaxBits);
+    for (double o : grid.origin)
+        if (!std::isfinite(o) || !std::isfinite(float(o))) return "the bounding box origin is not a finite float";
+    if (!std::isfinite(grid.step) || !(grid.step > 0)) return "the grid step is not a positive number";
+    return "";
+}
+
+bool dequantize(const std::vector<int32_t>& q, const Grid& grid, std::vector<float>& positions, size_t* badVertex) {
+    positions.resize(q.size());
+    for (size_t i = 0; i < q.size(); ++i) {
+        positions[i] = float(grid.origin[i % 3] + double(q[i]) * grid.step);
+        if (!std::isfinite(positions[i])) {
+            if (badVertex) *badVertex = i / 3;
+            return false;
+        }
+    }
+    return true;
+}
+
 std::vector<int32_t> quantize(const std::vector<float>& positions, const Grid& grid) {
     std::vector<int32_t> q(positions.size());
     const double top = gridMax(grid.bits);

@@ -1,5 +1,7 @@
 #include "repair_section.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "drm/drm.h"
@@ -128,6 +130,22 @@ void RepairReader::readAfterTraversal(size_t faceCount) {
     }
     if (coder_.bytesPastEnd() > 0)
         throw Error("corrupt file: the repairs section (" + std::to_string(size_) + " bytes) ends early");
+}
+
+void undoCut(std::vector<uint32_t>& t, const Repairs& r, size_t vertexCount) {
+    const size_t faceCount = t.size() / 3;
+    for (uint32_t& v : t)
+        if (v >= vertexCount) v = r.copyOf[v - vertexCount];
+    for (size_t f = 0; f < faceCount && f < r.flipped.size(); ++f)
+        if (r.flipped[f]) std::swap(t[3 * f + 1], t[3 * f + 2]);
+    t.reserve(t.size() + 3 * (r.duplicateOf.size() + r.looseCount()));
+    for (size_t i = 0; i < r.duplicateOf.size(); ++i) {
+        const size_t f = r.duplicateOf[i];
+        const uint32_t a = t[3 * f], b = t[3 * f + 1], c = t[3 * f + 2];
+        if (r.duplicateReversed[i]) t.insert(t.end(), {a, c, b});
+        else t.insert(t.end(), {a, b, c});
+    }
+    t.insert(t.end(), r.looseTriangles.begin(), r.looseTriangles.end());
 }
 
 }  // namespace drm

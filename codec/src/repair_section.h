@@ -39,6 +39,12 @@ struct Repairs {
     size_t looseCount() const { return looseTriangles.size() / 3; }
 };
 
+// The decoder's last step, which the encoder replays to know the decoded
+// faces: copies back to their originals, turned faces back over, then the
+// repeated faces and the faces repeating a vertex appended. traversal
+// holds the traversal's faces in decoded order.
+void undoCut(std::vector<uint32_t>& traversal, const Repairs& repairs, size_t vertexCount);
+
 std::vector<uint8_t> encodeRepairs(const Repairs& repairs, uint64_t vertexCount);
 
 // Reads the section in the order the decoder needs it: parts 1 to 3 on

@@ -10,6 +10,13 @@
 // such drift: coarse quantization (many vertices on one grid point),
 // holes, several components, isolated vertices, every option.
 //
+// Coordinates are then often moved to the edges of what a float holds
+// (extents past FLT_MAX, FLT_MAX itself, denormals, huge offsets with tiny
+// extents, one repeated point) or given a NaN or an infinity. The invariant
+// is the encoder's promise: it refuses the mesh with a message naming a
+// vertex (only for NaN, infinity or no vertices), or the decoder gives back
+// exactly what it coded; a file the decoder refuses is a failure.
+//
 // The meshes are often not manifold (holes touching at a vertex, stray
 // faces over any three indices, faces repeating a vertex, doubled and
 // turned-over faces): the encoder must take every one, so an encoder error
@@ -20,6 +27,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,7 +45,8 @@ drm::EncodeOptions optionsFrom(FuzzedDataProvider& in) {
     o.bits = in.ConsumeIntegralInRange(1, 21);
     o.predictor = in.PickValueInArray({drm::Predictor::Auto, drm::Predictor::Parallelogram, drm::Predictor::Midpoint});
     o.curvature = in.ConsumeBool();
-    o.geometry = in.ConsumeBool() ? drm::GeometryCoder::SpanningTree : drm::GeometryCoder::Raw;
+    o.geometry = in.PickValueInArray({drm::GeometryCoder::SpanningTree, drm::GeometryCoder::Raw, drm::GeometryCoder::Refine});
+    if (o.geometry == drm::GeometryCoder::Refine) o.refineBits = in.ConsumeIntegralInRange(0, std::min(3, o.bits - 1));
     o.keepVertexOrder = in.ConsumeBool();
     o.levers = {in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool()};
     o.tryWithoutLevers = in.ConsumeBool();
@@ -108,6 +117,39 @@ drm::Mesh meshFrom(FuzzedDataProvider& in) {
     return m;
 }
 
+// Moves the coordinates to the edges of float range, or spoils one. Returns
+// true if the mesh now holds a NaN or an infinity (the encoder must refuse).
+bool moveToFloatEdges(FuzzedDataProvider& in, drm::Mesh& m) {
+    if (m.positions.empty()) return false;
+    const int how = in.ConsumeIntegralInRange(0, 7);
+    const float big = std::numeric_limits<float>::max();
+    float lo = 0, hi = 0;
+    for (float x : m.positions) {
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+    }
+    const float span = hi > lo ? hi - lo : 1.0f;
+    for (float& x : m.positions) {
+        const float t = (x - lo) / span;  // 0 .. 1
+        switch (how) {
+            case 1: x = -big + 2.0f * t * big; break;               // extent 2 * FLT_MAX: past float, not past double
+            case 2: x = t * big; break;                              // up to FLT_MAX itself
+            case 3: x = t * 64.0f * std::numeric_limits<float>::denorm_min(); break;  // denormals, many equal
+            case 4: x = 1e30f + t * 1e24f; break;                   // huge offset, tiny extent (many equal floats)
+            case 5: x = 4e37f * (t - 0.5f); break;
+            case 6: x = 7.0f; break;                                 // one repeated point
+            default: break;                                          // 0, 7: as built
+        }
+    }
+    if (in.ConsumeIntegralInRange(0, 15) == 0) {
+        const size_t i = in.ConsumeIntegralInRange<size_t>(0, m.positions.size() - 1);
+        m.positions[i] = in.ConsumeBool() ? std::numeric_limits<float>::quiet_NaN()
+                                          : (in.ConsumeBool() ? 1.0f : -1.0f) * std::numeric_limits<float>::infinity();
+        return true;
+    }
+    return false;
+}
+
 // Oriented triangles, each rotated to start at its smallest index, sorted.
 std::vector<std::array<uint32_t, 3>> canonicalFaces(const std::vector<uint32_t>& triangles,
                                                     const std::vector<uint32_t>& renumber) {
@@ -126,14 +168,19 @@ std::vector<std::array<uint32_t, 3>> canonicalFaces(const std::vector<uint32_t>&
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     FuzzedDataProvider in(data, size);
     const drm::EncodeOptions options = optionsFrom(in);
-    const drm::Mesh mesh = meshFrom(in);
+    drm::Mesh mesh = meshFrom(in);
+    const bool spoiled = moveToFloatEdges(in, mesh);
     drm::Encoded encoded;
     try {
         encoded = drm::encode(mesh, options);
     } catch (const drm::Error& e) {
+        const std::string message = e.what();
         if (mesh.vertexCount() == 0) return 0;  // the one mesh no file holds
-        fail(std::string("the encoder refuses the mesh: ") + e.what());
+        if (spoiled && message.find("vertex ") != std::string::npos && message.find("non-finite") != std::string::npos)
+            return 0;                            // NaN or infinity, named
+        fail("the encoder refuses the mesh: " + message);
     }
+    if (spoiled) fail("the encoder took a mesh with a NaN or infinite coordinate");
     drm::Decoded decoded;
     try {
         decoded = drm::decode(encoded.bytes);

@@ -181,6 +181,11 @@ struct EncodeOptions {
     // vertex is kept), On always does.
     enum class Weld : uint8_t { Auto = 0, Off = 1, On = 2 };
     Weld weld = Weld::Auto;
+    // Decode the file just written and compare it with the input (grid
+    // points, oriented faces, every corner's attributes within their
+    // quantization) before returning; a mismatch throws Error. Costs about
+    // one decode (roughly half the encoding time again).
+    bool verify = false;
     // Below 20000 faces, also encode with no levers and keep the smaller
     // file: on tiny regular meshes (a 288-vertex torus) learning the levers'
     // contexts can cost a byte or two more than it saves.
@@ -305,6 +310,10 @@ inline Decoded decode(const std::vector<uint8_t>& bytes, const Progress& progres
 // Throws Error on empty input or non-finite coordinates.
 Grid makeGrid(const std::vector<float>& positions, int bits);
 std::vector<int32_t> quantize(const std::vector<float>& positions, const Grid& grid);
+
+// The largest angle, in radians, between a unit normal and its decoded
+// value at the given normal bits (octahedral quantization).
+double maxNormalError(int normalBits);
 
 // The library's version string, e.g. "0.1.0".
 const char* version();

@@ -1,0 +1,242 @@
+// Attributes through encode and decode: every kind, per vertex, per corner
+// with seams, per face, names and metadata; welding of a mesh with a vertex
+// per corner; the normal error bound measured; options and bad values.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "drm/drm.h"
+#include "test_meshes.h"
+
+namespace {
+
+// A sphere with colours from position, normals from position, spherical
+// texture coordinates (per vertex, and per corner with a seam where u
+// wraps), qualities, face colours and two materials.
+drm::Mesh decoratedSphere() {
+    drm::Mesh m = drm_test::icosphere(3);
+    const size_t V = m.vertexCount(), F = m.faceCount();
+    for (size_t v = 0; v < V; ++v) {
+        const float* p = &m.positions[3 * v];
+        const float len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        for (int k = 0; k < 3; ++k) m.colors.push_back(uint8_t(127.5f + 127.0f * p[k] / len));
+        m.colors.push_back(255);
+        for (int k = 0; k < 3; ++k) m.normals.push_back(p[k] / len);
+        const float u = 0.5f + std::atan2(p[1], p[0]) / 6.2831853f, w = 0.5f + std::asin(p[2] / len) / 3.1415927f;
+        m.texCoords.insert(m.texCoords.end(), {u, w});
+        m.quality.push_back(p[2] * 10.0f);
+    }
+    for (size_t f = 0; f < F; ++f) {
+        float us[3];
+        for (int k = 0; k < 3; ++k) us[k] = m.texCoords[2 * m.triangles[3 * f + k]];
+        const bool wraps = *std::max_element(us, us + 3) - *std::min_element(us, us + 3) > 0.5f;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = m.triangles[3 * f + k];
+            float u = m.texCoords[2 * v];
+            if (wraps && u < 0.5f) u += 1.0f;  // the seam: this face's corners continue past 1
+            m.cornerTexCoords.insert(m.cornerTexCoords.end(), {u, m.texCoords[2 * v + 1]});
+        }
+        const bool north = m.positions[3 * m.triangles[3 * f] + 2] > 0;
+        m.faceColors.insert(m.faceColors.end(), {uint8_t(north ? 200 : 20), 90, uint8_t(f % 7), 255});
+        m.faceQuality.push_back(float(f) * 0.25f);
+        m.faceMaterial.push_back(north ? 1 : 0);
+        m.faceTexture.push_back(0);
+    }
+    m.materials = {"south", "north"};
+    m.textures = {"sphere.png"};
+    m.metadata = {{"obj.mtllib", "sphere.mtl"}, {"obj.mtl", "newmtl south\nnewmtl north\n"}};
+    return m;
+}
+
+// Every face on its own three vertices, as many exporters write meshes.
+drm::Mesh vertexPerCorner(const drm::Mesh& m) {
+    drm::Mesh out;
+    for (size_t c = 0; c < m.triangles.size(); ++c) {
+        const uint32_t v = m.triangles[c];
+        out.positions.insert(out.positions.end(), &m.positions[3 * v], &m.positions[3 * v] + 3);
+        out.normals.insert(out.normals.end(), &m.normals[3 * v], &m.normals[3 * v] + 3);
+        out.texCoords.insert(out.texCoords.end(), &m.cornerTexCoords[2 * c], &m.cornerTexCoords[2 * c] + 2);
+        out.triangles.push_back(uint32_t(c));
+    }
+    return out;
+}
+
+drm::EncodeOptions verifying() {
+    drm::EncodeOptions o;
+    o.verify = true;
+    return o;
+}
+
+// The angle between two directions, from atan2 (acos loses it near zero).
+double angle(const float* a, const float* b) {
+    const double cx = double(a[1]) * b[2] - double(a[2]) * b[1], cy = double(a[2]) * b[0] - double(a[0]) * b[2],
+                 cz = double(a[0]) * b[1] - double(a[1]) * b[0];
+    const double dot = double(a[0]) * b[0] + double(a[1]) * b[1] + double(a[2]) * b[2];
+    return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot);
+}
+
+TEST(Attributes, EveryKindComesBackThroughTheDecodedOrder) {
+    const drm::Mesh m = decoratedSphere();
+    const drm::Encoded e = drm::encode(m, verifying());  // verify compares every corner itself
+    const drm::Decoded d = drm::decode(e.bytes);
+    ASSERT_EQ(d.mesh.vertexCount(), m.vertexCount());
+    ASSERT_EQ(e.faceOrder.size(), m.faceCount());
+    EXPECT_EQ(d.mesh.materials, m.materials);
+    EXPECT_EQ(d.mesh.textures, m.textures);
+    EXPECT_EQ(d.mesh.metadata, m.metadata);
+    double worstNormal = 0;
+    for (size_t f = 0; f < d.mesh.faceCount(); ++f) {
+        const size_t g = e.faceOrder[f];
+        EXPECT_EQ(d.mesh.faceMaterial[f], m.faceMaterial[g]);
+        for (int k = 0; k < 4; ++k) EXPECT_EQ(d.mesh.faceColors[4 * f + k], m.faceColors[4 * g + k]);
+        EXPECT_EQ(d.mesh.faceQuality[f], m.faceQuality[g]);
+        for (size_t k = 0; k < 3; ++k) {
+            const size_t ic = 3 * g + (k + e.faceRotation[f]) % 3, oc = 3 * f + k;
+            const uint32_t u = m.triangles[ic], v = d.mesh.triangles[oc];
+            ASSERT_EQ(e.vertexOrder[v], u);
+            for (int a = 0; a < 3; ++a) EXPECT_EQ(d.mesh.colors[4 * v + a], m.colors[4 * u + a]);
+            EXPECT_EQ(d.mesh.quality[v], m.quality[u]);
+            worstNormal = std::max(worstNormal, angle(&d.mesh.normals[3 * v], &m.normals[3 * u]));
+            for (int a = 0; a < 2; ++a) {
+                EXPECT_NEAR(d.mesh.texCoords[2 * v + a], m.texCoords[2 * u + a], 0.5 / 4095 + 1e-6);
+                EXPECT_NEAR(d.mesh.cornerTexCoords[2 * oc + a], m.cornerTexCoords[2 * ic + a], 1.0 / 4095 + 1e-6);
+            }
+        }
+    }
+    EXPECT_LE(worstNormal, drm::maxNormalError(10));
+    EXPECT_LT(worstNormal * 180 / 3.14159265, 1.0);
+    ASSERT_FALSE(e.stats.attributeSizes.empty());
+    EXPECT_EQ(e.stats.attributeSizes.size(), d.stats.attributeSizes.size());
+    uint64_t sum = 0;
+    for (const auto& s : e.stats.attributeSizes) sum += s.bytes;
+    EXPECT_LE(sum, e.stats.attributeBytes);
+    EXPECT_EQ(e.stats.headerBytes + e.stats.connectivityBytes + e.stats.geometryBytes + e.stats.attributeBytes,
+              e.stats.totalBytes);
+}
+
+TEST(Attributes, TheNormalBoundHoldsOverManyDirections) {
+    for (int bits : {4, 8, 10, 12, 16}) {
+        drm::Mesh m = drm_test::icosphere(4);
+        uint32_t state = 12345;
+        for (size_t v = 0; v < m.vertexCount(); ++v)
+            for (int k = 0; k < 3; ++k) {
+                state = state * 1664525u + 1013904223u;
+                m.normals.push_back(float(int32_t(state >> 8) % 20001 - 10000) / 10000.0f);
+            }
+        m.normals[0] = m.normals[1] = m.normals[2] = 0;  // a zero normal stays zero
+        drm::EncodeOptions o = verifying();
+        o.normalBits = bits;
+        const drm::Encoded e = drm::encode(m, o);
+        const drm::Decoded d = drm::decode(e.bytes);
+        double worst = 0;
+        for (size_t v = 0; v < d.mesh.vertexCount(); ++v) {
+            const float* in = &m.normals[3 * e.vertexOrder[v]];
+            if (in[0] == 0 && in[1] == 0 && in[2] == 0) {
+                EXPECT_EQ(d.mesh.normals[3 * v], 0.0f);
+                continue;
+            }
+            worst = std::max(worst, angle(&d.mesh.normals[3 * v], in));
+        }
+        EXPECT_LE(worst, drm::maxNormalError(bits)) << bits << " bits";
+        if (bits == 10) EXPECT_LT(worst * 180 / 3.14159265, 0.25);
+    }
+}
+
+TEST(Attributes, AVertexPerCornerMeshIsWeldedAndEveryCornerComesBack) {
+    const drm::Mesh sphere = decoratedSphere();
+    const drm::Mesh split = vertexPerCorner(sphere);
+    const drm::Encoded welded = drm::encode(split, verifying());
+    EXPECT_GT(welded.stats.weldedVertices, split.vertexCount() / 2);
+    drm::EncodeOptions off = verifying();
+    off.weld = drm::EncodeOptions::Weld::Off;
+    const drm::Encoded unwelded = drm::encode(split, off);
+    EXPECT_LT(2 * welded.bytes.size(), unwelded.bytes.size()) << welded.bytes.size() << " vs " << unwelded.bytes.size();
+    const drm::Decoded d = drm::decode(welded.bytes);
+    // One vertex per distinct (position, normal, uv): fewer than the input's,
+    // more than the sphere's (the seam splits some).
+    EXPECT_LT(d.mesh.vertexCount(), split.vertexCount());
+    EXPECT_GT(d.mesh.vertexCount(), sphere.vertexCount());
+    EXPECT_EQ(d.mesh.vertexCount(), welded.vertexOrder.size());
+    EXPECT_EQ(d.mesh.texCoords.size(), 2 * d.mesh.vertexCount());
+}
+
+TEST(Attributes, OnlyTheChosenAttributesAreKept) {
+    const drm::Mesh m = decoratedSphere();
+    drm::EncodeOptions o = verifying();
+    o.attributes = drm::parseAttributes("colors,materials");
+    const drm::Decoded d = drm::decode(drm::encode(m, o).bytes);
+    EXPECT_FALSE(d.mesh.colors.empty());
+    EXPECT_FALSE(d.mesh.faceMaterial.empty());
+    EXPECT_TRUE(d.mesh.normals.empty());
+    EXPECT_TRUE(d.mesh.cornerTexCoords.empty());
+    o.attributes = 0;
+    const drm::Encoded bare = drm::encode(m, o);
+    drm::Mesh plain;
+    plain.positions = m.positions;
+    plain.triangles = m.triangles;
+    EXPECT_EQ(bare.bytes, drm::encode(plain).bytes) << "no attributes: the file of the bare mesh";
+    EXPECT_THROW(drm::parseAttributes("colours"), drm::Error);
+}
+
+TEST(Attributes, BadValuesAndSizesAreNamed) {
+    drm::Mesh m = decoratedSphere();
+    m.normals[3 * 5 + 1] = std::numeric_limits<float>::quiet_NaN();
+    try {
+        drm::encode(m);
+        FAIL() << "a NaN normal was taken";
+    } catch (const drm::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("vertex 5"), std::string::npos) << e.what();
+    }
+    m = decoratedSphere();
+    m.cornerTexCoords[2 * 7] = std::numeric_limits<float>::infinity();
+    try {
+        drm::encode(m);
+        FAIL() << "an infinite texture coordinate was taken";
+    } catch (const drm::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("face 2"), std::string::npos) << e.what();
+    }
+    m = decoratedSphere();
+    m.colors.pop_back();
+    EXPECT_THROW(drm::encode(m), drm::Error);
+    m = decoratedSphere();
+    drm::EncodeOptions o;
+    o.normalBits = 30;
+    EXPECT_THROW(drm::encode(m, o), drm::Error);
+}
+
+TEST(Attributes, HugeAndDegenerateTextureRangesRoundTrip) {
+    drm::Mesh m = drm_test::icosphere(2);
+    for (size_t v = 0; v < m.vertexCount(); ++v) m.texCoords.insert(m.texCoords.end(), {0.25f, 0.25f});  // one point
+    EXPECT_NO_THROW(drm::encode(m, verifying()));
+    for (size_t v = 0; v < m.vertexCount(); ++v) m.texCoords[2 * v] = (v % 2 ? 3e38f : -3e38f);
+    EXPECT_NO_THROW(drm::encode(m, verifying()));
+}
+
+TEST(Attributes, CorruptAttributeSectionsAreRefusedOrSound) {
+    const drm::Encoded e = drm::encode(decoratedSphere());
+    const size_t attributeStart = e.bytes.size() - e.stats.attributeBytes;
+    int refused = 0;
+    for (size_t i = attributeStart; i < e.bytes.size(); i += 7) {
+        std::vector<uint8_t> bad = e.bytes;
+        bad[i] ^= 0x20;
+        try {
+            drm::decode(bad);
+        } catch (const drm::Error& err) {
+            ++refused;
+            const std::string what = err.what();
+            EXPECT_TRUE(what.rfind("corrupt", 0) == 0 || what.rfind("truncated", 0) == 0 || what.rfind("unsupported", 0) == 0)
+                << what;
+        }
+    }
+    EXPECT_GT(refused, 0);
+    for (size_t cut = attributeStart; cut < e.bytes.size(); cut += 5) {
+        const std::vector<uint8_t> truncated(e.bytes.begin(), e.bytes.begin() + cut);
+        EXPECT_THROW(drm::decode(truncated), drm::Error) << cut;
+    }
+}
+
+}  // namespace
