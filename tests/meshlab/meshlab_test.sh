@@ -204,8 +204,9 @@ attributes)
     server 0 -i "$attr/vcolors.ply" -o "$work/coloured.drm" -m vc vt
     [ -s coloured.drm ] || fail "coloured.drm was not written: $(tail -5 server.txt)"
     ! grep -q "does not keep the mesh's vertex colours (not ticked)" server.txt || fail "vc was ticked: $(grep '^drm: note:' server.txt)"
-    cp "$attr/duck.obj" "$attr/duck.mtl" "$work/"
-    server 0 -i "$work/duck.obj" -o "$work/textured.drm" -m wt
+    # MeshLab's own OBJ importer aborts on duck.obj (an assertion in vcglib's
+    # ImporterOBJ): the same duck as PLY with wedge texture coordinates.
+    server 0 -i "$attr/duck-wedge.ply" -o "$work/textured.drm" -m wt
     [ -s textured.drm ] || fail "textured.drm was not written: $(tail -5 server.txt)"
     "$drm" info coloured.drm --json >info.txt || fail "drm info coloured.drm failed"
     if grep -q '"attributes": \[\]' info.txt; then
