@@ -64,7 +64,8 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 
 const std::vector<std::string>& encodeOptionNames() {
     static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers",
-                                                   "--refine-bits"};
+                                                   "--refine-bits", "--attributes", "--normal-bits", "--uv-bits",
+                                                   "--weld"};
     return names;
 }
 
@@ -92,8 +93,18 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
     options.keepVertexOrder = args.has("--keep-vertex-order");
     if (args.has("--bits")) options.bits = wholeNumber(args, "--bits");
     if (args.has("--refine-bits")) options.refineBits = wholeNumber(args, "--refine-bits");
+    if (args.has("--normal-bits")) options.normalBits = wholeNumber(args, "--normal-bits");
+    if (args.has("--uv-bits")) options.uvBits = wholeNumber(args, "--uv-bits");
+    if (args.has("--weld")) {
+        const std::string weld = args.value("--weld");
+        if (weld == "auto") options.weld = drm::EncodeOptions::Weld::Auto;
+        else if (weld == "on") options.weld = drm::EncodeOptions::Weld::On;
+        else if (weld == "off") options.weld = drm::EncodeOptions::Weld::Off;
+        else throw UsageError("--weld takes auto, on or off, not '" + weld + "'");
+    }
     try {
         if (args.has("--predictor")) options.predictor = drm::parsePredictor(args.value("--predictor"));
+        if (args.has("--attributes")) options.attributes = drm::parseAttributes(args.value("--attributes"));
         if (args.has("--geometry")) options.geometry = drm::parseGeometryCoder(args.value("--geometry"));
         if (args.has("--levers")) {
             // Named levers are used as given: no automatic fallback to none.
@@ -109,6 +120,44 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
         options.curvature = onOff == "on";
     }
     return options;
+}
+
+std::vector<std::string> attributesNotKept(const drm::Mesh& mesh, const drm::EncodeOptions& options,
+                                           const drm::Stats& stats) {
+    uint32_t kept = 0;
+    for (const drm::Stats::AttributeSize& section : stats.attributeSizes) {
+        try {
+            kept |= drm::parseAttributes(section.name);
+        } catch (const drm::Error&) {
+            // A section this tool has no name for: it keeps something, not
+            // one of the attributes asked for.
+        }
+    }
+    const uint32_t lost = drm::attributesOf(mesh) & options.attributes & ~kept;
+    if (lost == 0) return {};
+    std::string names = drm::attributesName(lost);
+    for (char& c : names)
+        if (c == ',') c = ' ';
+    std::string list;
+    size_t start = 0;
+    std::vector<std::string> words;
+    while (start < names.size()) {
+        const size_t space = std::min(names.find(' ', start), names.size());
+        words.push_back(names.substr(start, space - start));
+        start = space + 1;
+    }
+    for (size_t i = 0; i < words.size(); ++i) list += (i == 0 ? "" : i + 1 == words.size() ? " and " : ", ") + words[i];
+    return {"the mesh's " + list + " are not kept in the .drm file (this codec build has no section for them)"};
+}
+
+std::string attributeSummary(const drm::Stats& stats) {
+    std::string out;
+    for (const drm::Stats::AttributeSize& section : stats.attributeSizes) {
+        const double bpv = stats.vertices ? 8.0 * double(section.bytes) / double(stats.vertices) : 0.0;
+        out += (out.empty() ? "" : ", ") + section.name + " " + std::to_string(section.bytes) + " bytes (" +
+               fixed(bpv, 2) + " bits per vertex)";
+    }
+    return out;
 }
 
 void printNote(const std::string& note) { std::fprintf(stderr, "drm: note: %s\n", note.c_str()); }

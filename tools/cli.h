@@ -37,8 +37,8 @@ struct Arguments {
 Arguments parseArguments(const std::string& command, const std::vector<std::string>& args,
                          const std::vector<std::string>& valued, const std::vector<std::string>& flags);
 
-// --bits, --predictor, --curvature, --geometry, --levers, --keep-vertex-order as given
-// (defaults otherwise).
+// --bits, --predictor, --curvature, --geometry, --levers, --keep-vertex-order,
+// --attributes, --normal-bits, --uv-bits, --weld as given (defaults otherwise).
 // Malformed values are UsageErrors; ranges are left to the codec.
 drm::EncodeOptions encodeOptionsFrom(const Arguments& args);
 
@@ -46,6 +46,16 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args);
 // value, and flags (--keep-vertex-order).
 const std::vector<std::string>& encodeOptionNames();
 const std::vector<std::string>& encodeFlagNames();
+
+// Notes for what `mesh` carries among the attributes `options` asks for
+// that the encoded file does not hold (no section in stats), e.g. "the
+// file's normals are not kept in .drm files"; empty when all are kept.
+std::vector<std::string> attributesNotKept(const drm::Mesh& mesh, const drm::EncodeOptions& options,
+                                           const drm::Stats& stats);
+
+// The attribute sections of a file as "normals 1234 bytes (4.56 bits per
+// vertex), ..." or "" for none.
+std::string attributeSummary(const drm::Stats& stats);
 
 // "drm: note: ..." on stderr.
 void printNote(const std::string& note);

@@ -3,6 +3,7 @@
 #include "batch.h"
 #include "cli.h"
 #include "commands.h"
+#include "mesh_input.h"
 
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
@@ -14,13 +15,19 @@ namespace drm {
 namespace cli {
 
 const char* const kDecodeHelp =
-    "usage: drm decode IN.drm OUT.ply\n"
-    "       drm decode INPUTS... -o DIR [-j N]\n"
+    "usage: drm decode IN.drm OUT.ply|OUT.obj\n"
+    "       drm decode INPUTS... -o DIR [-j N] [--format ply|obj]\n"
     "\n"
-    "Decompresses IN.drm into a binary PLY mesh (float x, y, z per vertex,\n"
-    "triangles). Vertices come out in the order the file stores them: the\n"
-    "input's order if it was encoded with --keep-vertex-order.\n"
-    "OUT.ply is written completely or not at all.\n"
+    "Decompresses IN.drm into a mesh file, by OUT's extension: binary PLY\n"
+    "(float x, y, z per vertex, triangles, and the attributes the file carries\n"
+    "under the names MeshLab reads: nx ny nz, red green blue alpha, quality,\n"
+    "texture_u texture_v, face texcoord, texnumber, colour, quality, comment\n"
+    "TextureFile) or OBJ (v with colours, vt, vn, usemtl groups, and the .mtl\n"
+    "file the input came with, written beside OUT.obj). What the chosen format\n"
+    "cannot hold is named in a note. Texture images are not in .drm files: keep\n"
+    "them beside the output. Vertices come out in the order the file stores\n"
+    "them: the input's order if it was encoded with --keep-vertex-order.\n"
+    "OUT is written completely or not at all.\n"
     "\n"
     "With -o DIR, every input is decompressed into DIR/NAME.ply (NAME: the\n"
     "input's name without its extension; DIR is created if missing). An input\n"
@@ -31,11 +38,13 @@ const char* const kDecodeHelp =
     "\n"
     "options:\n"
     "  -o, --output-dir DIR  write DIR/NAME.ply for every input (several inputs, folders)\n"
+    "  --format F        with -o: ply (default) or obj\n"
     "  -j, --jobs N      files decoded at once with -o (default: the number of cores)\n";
 
 namespace {
 
 struct DecodedFile {
+    std::vector<std::string> notes;  // what OUT's format cannot hold
     std::string line;  // "IN -> OUT: V ..., F ..."
     uint64_t bytes = 0;
 };
@@ -50,8 +59,8 @@ DecodedFile decodeFile(const std::string& input, const std::string& output, Prog
         throw drm::Error("cannot decode " + input + ": " + e.what());
     }
     if (bar) bar->clear();
-    drm::vcgio::savePly(output, decoded.mesh);
     DecodedFile result;
+    result.notes = drm::vcgio::saveMesh(output, decoded.mesh);
     result.line = input + " -> " + output + ": V " + std::to_string(decoded.stats.vertices) + ", F " +
                   std::to_string(decoded.stats.faces);
     result.bytes = fileBytes(output);
@@ -63,14 +72,18 @@ bool isDrmFileName(const std::string& name) { return hasExtension(name, ".drm");
 }  // namespace
 
 int runDecode(const std::vector<std::string>& args) {
-    const Arguments parsed = parseArguments("decode", args, batchOptionNames(), {});
+    std::vector<std::string> valued = batchOptionNames();
+    valued.push_back("--format");
+    const Arguments parsed = parseArguments("decode", args, valued, {});
+    const std::string format = parsed.value("--format", "ply");
+    if (format != "ply" && format != "obj") throw UsageError("--format takes ply or obj, not '" + format + "'");
     if (parsed.has("-o") && parsed.has("--output-dir")) throw UsageError("give -o or --output-dir, not both");
     const int jobs = jobsFrom(parsed);
     if (parsed.has("-o") || parsed.has("--output-dir")) {
         parsed.expectPositional(1, size_t(-1), "input .drm files or folders");
         const std::string dir = parsed.has("-o") ? parsed.value("-o") : parsed.value("--output-dir");
         const std::vector<std::string> inputs = collectInputs(parsed.positional, isDrmFileName, ".drm files");
-        const std::vector<std::string> outputs = outputPaths(inputs, dir, ".ply");
+        const std::vector<std::string> outputs = outputPaths(inputs, dir, "." + format);
         std::vector<BatchFile> files;
         for (size_t i = 0; i < inputs.size(); ++i) files.push_back({inputs[i], outputs[i], fileBytes(inputs[i])});
         runBatch({"decoded", "bytes out", true}, files, jobs, [](const BatchFile& file) {
@@ -79,6 +92,7 @@ int runDecode(const std::vector<std::string>& args) {
                 const DecodedFile decoded = decodeFile(file.input, file.output, nullptr);
                 outcome.ok = true;
                 outcome.line = decoded.line;
+                outcome.notes = decoded.notes;
                 outcome.bytesOut = decoded.bytes;
             } catch (const std::exception& e) {
                 outcome.error = e.what();
@@ -87,11 +101,15 @@ int runDecode(const std::vector<std::string>& args) {
         });
         return 0;
     }
-    expectInputAndOutput(parsed, "decode", "an input .drm file and an output .ply file");
+    if (parsed.has("--format")) throw UsageError("--format goes with -o DIR; otherwise OUT's extension says the format");
+    expectInputAndOutput(parsed, "decode", "an input .drm file and an output .ply or .obj file");
     const std::string& input = parsed.positional[0];
     const std::string& output = parsed.positional[1];
     ProgressBar bar("decoding " + fileName(input));
+    if (!hasExtension(output, ".ply") && !hasExtension(output, ".obj"))
+        throw UsageError("the output must be a .ply or .obj file, not '" + output + "'");
     const DecodedFile decoded = decodeFile(input, output, &bar);
+    printNotes(decoded.notes);
     std::printf("%s\n", decoded.line.c_str());
     return 0;
 }

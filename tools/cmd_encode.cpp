@@ -15,13 +15,18 @@ namespace cli {
 
 const char* const kEncodeHelp =
     "usage: drm encode IN OUT.drm [--bits N] [--predictor P] [--curvature on|off] [--geometry G] [--levers L]\n"
-    "                  [--keep-vertex-order]\n"
+    "                  [--keep-vertex-order] [--attributes LIST|all|none] [--normal-bits N] [--uv-bits N]\n"
+    "                  [--weld auto|on|off]\n"
     "       drm encode INPUTS... -o DIR [-j N] [options as above]\n"
     "\n"
     "Compresses the triangle mesh IN (PLY, OBJ, OFF or STL) into OUT.drm.\n"
     "Vertex positions are quantized to N bits per axis over the bounding box;\n"
-    "connectivity is coded losslessly. Colours, normals and texture coordinates\n"
-    "are not kept (a note says so). OUT.drm is written completely or not at all.\n"
+    "connectivity is coded losslessly. What the file carries besides is kept by\n"
+    "default: vertex colours (exact), normals (to --normal-bits), texture\n"
+    "coordinates per vertex or per corner (to --uv-bits), vertex and face quality,\n"
+    "face colours, OBJ materials and their .mtl file, texture file names. What\n"
+    "cannot be kept (custom PLY properties, per-face normals, ...) is named in a\n"
+    "note. OUT.drm is written completely or not at all.\n"
     "\n"
     "With -o DIR, every input is compressed into DIR/NAME.drm (NAME: the input's\n"
     "name without its extension; DIR is created if missing). An input may be a\n"
@@ -46,6 +51,16 @@ const char* const kEncodeHelp =
     "                    by default meshes under 20000 faces also try none\n"
     "  --keep-vertex-order  also store the input's vertex order, so that decoding\n"
     "                    gives vertices back in input order (costs bits)\n"
+    "  --attributes L    attributes to keep: all (default), none, or a list of\n"
+    "                    colors, normals, texcoords, quality, corner-texcoords,\n"
+    "                    corner-normals, face-colors, face-quality, materials,\n"
+    "                    textures, metadata\n"
+    "  --normal-bits N   normal quantization, 4..16 bits (default 10: within 0.2 degrees)\n"
+    "  --uv-bits N       texture coordinate quantization over their range, 1..24 bits\n"
+    "                    (default 12: within half a step of 1/4095 of the range)\n"
+    "  --weld W          auto (default), on or off: merge a mesh's vertices repeating\n"
+    "                    a grid point (a vertex per corner, as some exporters write)\n"
+    "                    for the connectivity, keeping each corner's attributes\n"
     "  -o, --output-dir DIR  write DIR/NAME.drm for every input (several inputs, folders)\n"
     "  -j, --jobs N      files encoded at once with -o (default: the number of cores)\n";
 
@@ -73,6 +88,7 @@ EncodedFile encodeFile(const std::string& input, const std::string& output, drm:
     drm::vcgio::writeFileAtomically(output, encoded.bytes);
     EncodedFile result;
     result.notes = loaded.notes;
+    for (const std::string& note : attributesNotKept(loaded.mesh, options, encoded.stats)) result.notes.push_back(note);
     result.repairs = repairsOf(encoded.stats);
     result.line = input + " -> " + output + ": " + summaryOf(encoded.stats);
     result.bytes = encoded.bytes.size();

@@ -14,15 +14,18 @@ const char* const kInfoHelp =
     "usage: drm info IN.drm [--json]\n"
     "\n"
     "Decodes IN.drm and prints its counts, options, section sizes, bits per\n"
-    "vertex and the histogram of rank codes (rank 0 = boundary edge).\n"
+    "vertex (also of each attribute section: colours, normals, texture\n"
+    "coordinates, ...) and the histogram of rank codes (rank 0 = boundary edge).\n"
     "\n"
     "options:\n"
     "  --json   one JSON object with the keys vertices, faces, components,\n"
     "           boundary_edges, bits, predictor, curvature, geometry,\n"
     "           refine_bits (low bits of the refine coder, 0 otherwise), levers,\n"
     "           header_bytes, connectivity_bytes, geometry_bytes,\n"
-    "           vertex_order_bytes, total_bytes,\n"
-    "           connectivity_bpv, geometry_bpv, total_bpv, rank_histogram\n"
+    "           vertex_order_bytes, attribute_bytes, welded_vertices,\n"
+    "           attributes (one object per attribute section, in file order:\n"
+    "           name, bytes, bpv), total_bytes,\n"
+    "           connectivity_bpv, geometry_bpv, attribute_bpv, total_bpv, rank_histogram\n"
     "           (rank -> count, ranks with no codes left out)\n";
 
 namespace {
@@ -62,6 +65,10 @@ uint64_t totalCodes(const drm::Stats& stats) {
     return total;
 }
 
+double bitsPerVertex(uint64_t bytes, const drm::Stats& s) {
+    return s.vertices ? 8.0 * double(bytes) / double(s.vertices) : 0.0;
+}
+
 void printJson(const std::string& path, const drm::Stats& s) {
     auto number = [](uint64_t v) { return std::to_string(v); };
     std::string out = "{\n";
@@ -87,9 +94,18 @@ void printJson(const std::string& path, const drm::Stats& s) {
     field("connectivity_bytes", number(s.connectivityBytes));
     field("geometry_bytes", number(s.geometryBytes));
     field("vertex_order_bytes", number(s.vertexOrderBytes));
+    field("attribute_bytes", number(s.attributeBytes));
+    field("welded_vertices", number(s.weldedVertices));
+    std::string sections = "[";
+    for (const drm::Stats::AttributeSize& section : s.attributeSizes)
+        sections += std::string(sections.size() > 1 ? ", " : "") + "{\"name\": " + jsonString(section.name) +
+                    ", \"bytes\": " + number(section.bytes) + ", \"bpv\": " + fixed(bitsPerVertex(section.bytes, s), 6) +
+                    "}";
+    field("attributes", sections + "]");
     field("total_bytes", number(s.totalBytes));
     field("connectivity_bpv", fixed(s.connectivityBitsPerVertex(), 6));
     field("geometry_bpv", fixed(s.geometryBitsPerVertex(), 6));
+    field("attribute_bpv", fixed(bitsPerVertex(s.attributeBytes, s), 6));
     field("total_bpv", fixed(s.totalBitsPerVertex(), 6));
     std::string histogram = "{";
     for (size_t rank = 0; rank < s.rankHistogram.size(); ++rank) {
@@ -123,6 +139,13 @@ void printText(const std::string& path, const drm::Stats& s) {
     row("connectivity bytes", bytesAndRate(s.connectivityBytes, s.connectivityBitsPerVertex()));
     row("geometry bytes", bytesAndRate(s.geometryBytes, s.geometryBitsPerVertex()));
     if (s.vertexOrderBytes > 0) row("vertex order bytes", std::to_string(s.vertexOrderBytes));
+    if (!s.attributeSizes.empty()) {
+        row("attribute bytes", bytesAndRate(s.attributeBytes, bitsPerVertex(s.attributeBytes, s)));
+        for (const drm::Stats::AttributeSize& section : s.attributeSizes)
+            std::printf("  %-18s %s\n", section.name.c_str(),
+                        bytesAndRate(section.bytes, bitsPerVertex(section.bytes, s)).c_str());
+    }
+    if (s.weldedVertices > 0) row("welded vertices", std::to_string(s.weldedVertices));
     row("total bytes", bytesAndRate(s.totalBytes, s.totalBitsPerVertex()));
     const uint64_t codes = totalCodes(s);
     std::printf("rank codes           %llu (rank: count, share)\n", (unsigned long long)codes);

@@ -38,6 +38,9 @@ std::string summaryOf(const drm::Stats& stats) {
     return "V " + std::to_string(stats.vertices) + ", F " + std::to_string(stats.faces) + ", " +
            std::to_string(stats.totalBytes) + " bytes; bits per vertex: connectivity " +
            fixed(stats.connectivityBitsPerVertex(), 3) + ", geometry " + fixed(stats.geometryBitsPerVertex(), 3) +
+           (stats.attributeBytes > 0
+                ? ", attributes " + fixed(stats.vertices ? 8.0 * double(stats.attributeBytes) / double(stats.vertices) : 0.0, 3)
+                : std::string()) +
            ", total " + fixed(stats.totalBitsPerVertex(), 3);
 }
 

@@ -7,11 +7,13 @@
 
 #include <drm/drm.h>
 #include <drm_vcg/file_io.h>
+#include <drm_vcg/vcg_attributes.h>
 #include <drm_vcg/vcg_mesh.h>
 
 #include <QFile>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <new>
 #include <vector>
 
@@ -33,11 +35,12 @@ QList<MeshIOInterface::Format> DrmIOPlugin::exportFormats() const {
     return {Format("Distance-ranked compressed mesh", tr("DRM"))};
 }
 
-// A .drm file keeps positions and triangles only, so there is nothing to
-// tick in the save dialog's attribute boxes.
+// The attributes a .drm file keeps. As MeshLab's PLY export does, normals
+// are offered but not ticked by default: MeshLab computes them for every
+// mesh it opens, so they are seldom the file's own.
 void DrmIOPlugin::GetExportMaskCapability(QString& /*format*/, int& capability, int& defaultBits) const {
-    capability = 0;
-    defaultBits = 0;
+    capability = drm_meshlab::kExportCapability;
+    defaultBits = capability & ~vcg::tri::io::Mask::IOM_VERTNORMAL;
 }
 
 void DrmIOPlugin::initSaveParameter(const QString& /*format*/, MeshModel& /*m*/, RichParameterList& parameters) {
@@ -59,7 +62,17 @@ bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshM
         const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(localPath(fileName));
         const drm::Decoded decoded = drm::decode(bytes, drm_meshlab::progressTo(cb));
         drm::vcgio::toVcg(decoded.mesh, m.cm);
-        mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
+        // Optional components first (MeshLab's own importers do the same),
+        // then the values.
+        int attributeMask = drm::vcgio::ioMaskOf(decoded.mesh);
+        if (!decoded.mesh.cornerNormals.empty()) attributeMask |= vcg::tri::io::Mask::IOM_VERTNORMAL;
+        m.Enable(attributeMask);
+        const int restored = drm::vcgio::attributesToVcg(decoded.mesh, m.cm);
+        mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX | restored;
+        // Texture names are relative to the .drm file, as for PLY and OBJ.
+        for (std::string& texture : m.cm.textures) std::replace(texture.begin(), texture.end(), '\\', '/');
+        for (const std::string& note : drm_meshlab::openNotes(decoded.mesh, QFileInfo(fileName).absolutePath()))
+            Log(GLLogStream::WARNING, "drm: note: " + name + ": " + note);
         Log(GLLogStream::FILTER, "drm: opened " + name + ": " + drm_meshlab::statsSummary(decoded.stats));
         return true;
     } catch (const drm::Error& e) {
@@ -74,22 +87,23 @@ bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshM
     }
 }
 
-bool DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshModel& m, const int /*mask*/,
+bool DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshModel& m, const int mask,
                        const RichParameterList& parameters, vcg::CallBackPos* cb, QWidget* /*parent*/) {
     const std::string name = shownName(fileName);
     try {
         drm::EncodeOptions options = drm_meshlab::encodeOptionsFrom(parameters);
         options.progress = drm_meshlab::progressTo(cb);
-        const drm::Mesh mesh = drm::vcgio::fromVcg(m.cm);
+        drm::Mesh mesh = drm::vcgio::fromVcg(m.cm);
+        const int kept = drm_meshlab::exportedAttributes(m, mask);
+        drm::vcgio::attributesFromVcg(m.cm, kept, mesh);
         const drm::Encoded encoded = drm_meshlab::encodeMesh(mesh, options);
         // Atomic: an existing file is replaced only by a complete new one.
         drm::vcgio::writeFileAtomically(localPath(fileName), encoded.bytes);
 
-        const std::vector<std::string> lost = drm_meshlab::lostAttributes(m);
+        const std::vector<std::string> lost = drm_meshlab::lostAttributes(m, kept, mesh, encoded.stats);
         if (!lost.empty()) {
             const std::string note = "drm: note: " + name + " does not keep the mesh's " +
-                                     drm_meshlab::joinedList(lost) + " (only positions, on a " +
-                                     std::to_string(options.bits) + "-bit grid, and triangles)";
+                                     drm_meshlab::joinedList(lost);
             Log(GLLogStream::WARNING, note);
             qInfo("%s", note.c_str());
         }

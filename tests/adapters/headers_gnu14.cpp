@@ -3,6 +3,7 @@
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
 #include <drm_vcg/rank_palette.h>
+#include <drm_vcg/vcg_attributes.h>
 #include <drm_vcg/vcg_mesh.h>
 
 #if __cplusplus > 201402L
@@ -13,5 +14,8 @@
 drm::Mesh drmVcgHeadersRoundTrip(const drm::Mesh& mesh) {
     drm::vcgio::VcgMesh vcgMesh;
     drm::vcgio::toVcg(mesh, vcgMesh);
-    return drm::vcgio::fromVcg(vcgMesh);
+    drm::Mesh out = drm::vcgio::fromVcg(vcgMesh);
+    drm::vcgio::attributesToVcg(mesh, vcgMesh);
+    drm::vcgio::attributesFromVcg(vcgMesh, drm::vcgio::ioMaskOf(mesh), out);
+    return out;
 }

@@ -95,8 +95,13 @@ TEST(LoadMesh, ObjReadsSlashesNegativeIndicesAndPolygons) {
     const drm::vcgio::LoadedMesh loaded = loadMesh(dir.file("m.obj"));
     EXPECT_EQ(loaded.mesh.triangles, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 0, 1, 2, 0, 2, 3}));
     EXPECT_TRUE(hasNoteContaining(loaded, "2 of the 4 triangles come from polygons"));
-    EXPECT_TRUE(hasNoteContaining(loaded, "normals"));
-    EXPECT_TRUE(hasNoteContaining(loaded, "texture coordinates"));
+    // The corners' vt and vn are kept (every corner uses vn 1: per vertex;
+    // the quad's corners have none, so all are per corner).
+    EXPECT_EQ(loaded.mesh.cornerTexCoords.size(), 6u * 4);
+    EXPECT_EQ(loaded.mesh.cornerNormals.size(), 9u * 4);
+    EXPECT_EQ(loaded.mesh.cornerNormals[2], 1.0f);
+    EXPECT_EQ(loaded.mesh.cornerNormals[9 * 3 + 2], 0.0f);
+    EXPECT_TRUE(hasNoteContaining(loaded, "9 face corners have no texture coordinate"));
 }
 
 TEST(LoadMesh, PlyPolygonsAreFanSplitInPlace) {
@@ -119,7 +124,7 @@ TEST(LoadMesh, OffQuadsBecomeTwoTrianglesWithTheQuadsOrientation) {
     EXPECT_TRUE(hasNoteContaining(loaded, "polygons"));
 }
 
-TEST(LoadMesh, NotesAttributesThatDrmDoesNotKeep) {
+TEST(LoadMesh, KeepsVertexColoursAndNormalsWithoutANote) {
     ScratchDir dir;
     writeText(dir.file("c.ply"),
               asciiPlyHeader(3, 1,
@@ -127,8 +132,9 @@ TEST(LoadMesh, NotesAttributesThatDrmDoesNotKeep) {
                              "property uchar red\nproperty uchar green\nproperty uchar blue\n") +
                   "0 0 0 0 0 1 255 0 0\n1 0 0 0 0 1 0 255 0\n0 1 0 0 0 1 0 0 255\n3 0 1 2\n");
     const drm::vcgio::LoadedMesh loaded = loadMesh(dir.file("c.ply"));
-    ASSERT_EQ(loaded.notes.size(), 1u);
-    EXPECT_EQ(loaded.notes[0], "the file's vertex colours and normals are not kept in .drm files");
+    EXPECT_TRUE(loaded.notes.empty()) << loaded.notes[0];
+    EXPECT_EQ(loaded.mesh.colors, (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255}));
+    EXPECT_EQ(loaded.mesh.normals, (std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}));
 }
 
 TEST(LoadMesh, StlIsWeldedOnIdenticalPositionsInOrderOfFirstUse) {
@@ -175,7 +181,11 @@ TEST(SavePly, RoundTripsBitExactlyThroughLoadMesh) {
     ASSERT_EQ(loaded.mesh.positions.size(), mesh.positions.size());
     EXPECT_EQ(std::memcmp(loaded.mesh.positions.data(), mesh.positions.data(), 4 * mesh.positions.size()), 0);
     EXPECT_EQ(loaded.mesh.triangles, mesh.triangles);
-    EXPECT_TRUE(hasNoteContaining(loaded, "face colours and face quality values"));
+    // The face colours and quality come back as the mesh's own.
+    ASSERT_EQ(loaded.mesh.faceColors.size(), 12u);
+    EXPECT_EQ(loaded.mesh.faceColors[4], 4);
+    EXPECT_EQ(loaded.mesh.faceColors[6], 6);
+    EXPECT_EQ(loaded.mesh.faceQuality, attributes.quality);
 }
 
 TEST(LoadMesh, ErrorsNameTheFileAndTheReason) {

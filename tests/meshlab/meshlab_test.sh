@@ -104,7 +104,7 @@ colorize)
     # Saving the coloured mesh as .drm says what stays behind.
     server 0 -i "$work/fandisk-ranks.ply" -o "$work/coloured.drm"
     [ -s coloured.drm ] || fail "coloured.drm was not written: $(tail -5 server.txt)"
-    grep -q "^drm: note: coloured.drm does not keep the mesh's face colours and face quality" server.txt ||
+    grep -q "^drm: note: coloured.drm does not keep the mesh's face colours (not ticked) and face quality (not ticked)" server.txt ||
         fail "no note about the face colours and quality left behind: $(tail -5 server.txt)"
     echo "colorize: $(grep '^drm: note:' server.txt)"
     ;;
@@ -195,6 +195,39 @@ batch)
     [ "$code" -eq 1 ] || fail "batch-decompress with broken.drm exited $code: $(cat batch.txt)"
     grep -q "^batch-decompress: stopped at broken.drm: cannot open broken.drm: " batch.txt || fail "unclear stop: $(cat batch.txt)"
     echo "batch: failures stop with: $(grep -h 'stopped at' batch.txt | cut -c1-120)"
+    ;;
+attributes)
+    # A coloured and a textured mesh out through the plugin's export (the
+    # boxes ticked with -m) and back in through its import; MeshLab's PLY
+    # export of the reopened mesh must carry what `drm decode` gives.
+    attr="$data/attributes"
+    server 0 -i "$attr/vcolors.ply" -o "$work/coloured.drm" -m vc vt
+    [ -s coloured.drm ] || fail "coloured.drm was not written: $(tail -5 server.txt)"
+    ! grep -q "does not keep the mesh's vertex colours (not ticked)" server.txt || fail "vc was ticked: $(grep '^drm: note:' server.txt)"
+    # MeshLab's own OBJ importer aborts on duck.obj (an assertion in vcglib's
+    # ImporterOBJ): the same duck as PLY with wedge texture coordinates.
+    server 0 -i "$attr/duck-wedge.ply" -o "$work/textured.drm" -m wt
+    [ -s textured.drm ] || fail "textured.drm was not written: $(tail -5 server.txt)"
+    "$drm" info coloured.drm --json >info.txt || fail "drm info coloured.drm failed"
+    if grep -q '"attributes": \[\]' info.txt; then
+        echo "attributes: SKIP the round trip: this build's codec writes no attribute sections yet"
+        exit 77
+    fi
+    grep -q '"colors"' info.txt || fail "coloured.drm has no colour section: $(cat info.txt)"
+    "$drm" info textured.drm --json >info.txt || fail "drm info textured.drm failed"
+    grep -q '"corner-texcoords"' info.txt || fail "textured.drm has no corner texture coordinates: $(cat info.txt)"
+    server 0 -i "$work/coloured.drm" -o "$work/coloured-meshlab.ply" -m vc vt
+    "$drm" decode coloured.drm coloured-cli.ply >/dev/null || fail "drm decode coloured.drm failed"
+    same "$work/coloured-meshlab.ply" "$work/coloured-cli.ply" --vertex-colours --vertex-texcoords
+    server 0 -i "$work/textured.drm" -o "$work/textured-meshlab.ply" -m wt
+    # The texture image is not in tests/data: the plugin says it is missing
+    # beside the .drm file (MeshLab looks there, as for PLY and OBJ).
+    grep -q "texture files not found beside the file: .*duckCM.tga" server.txt ||
+        fail "no word on the missing duckCM.tga: $(grep 'drm' server.txt | tail -5)"
+    grep -a -q "^comment TextureFile .*duckCM.tga" textured-meshlab.ply ||
+        fail "the reopened duck lost its texture name: $(head -c 300 textured-meshlab.ply)"
+    "$drm" decode textured.drm textured-cli.ply >/dev/null || fail "drm decode textured.drm failed"
+    same "$work/textured-meshlab.ply" "$work/textured-cli.ply" --wedge-texcoords
     ;;
 *)
     fail "unknown case"

@@ -30,7 +30,9 @@ uint64_t preflightOff(const std::string& text);
 // 127 corners, each an existing vertex; lists vcglib copies into fixed
 // arrays must fit them. Returns the number of triangles of the "face"
 // element, or -1 if the file has none (vcglib may still read tristrips).
-int64_t preflightPly(const std::vector<uint8_t>& bytes);
+// If `properties` is given, it receives the header's properties as
+// "ELEMENT.NAME" in header order.
+int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>* properties = nullptr);
 
 // Binary STL must be exactly 84 + 50 * triangle count bytes long; anything
 // else must be plain ASCII text starting with "solid" and holding a newline.

@@ -4,6 +4,7 @@
 #include "drm_vcg/mesh_io.h"
 
 #include "drm_vcg/file_io.h"
+#include "drm_vcg/vcg_attributes.h"
 #include "drm_vcg/vcg_mesh.h"
 #include "format_preflight.h"
 #include "loading_mesh.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cerrno>
 #include <cstring>
 #include <new>
@@ -52,20 +54,62 @@ void addDroppedNote(std::vector<std::string>& notes, const std::vector<std::stri
     if (!dropped.empty()) notes.push_back("the file's " + joinList(dropped) + " are not kept in .drm files");
 }
 
-// What vcglib's load mask says the file had that drm::Mesh does not hold.
+// What vcglib's load mask says the file had that drm::Mesh does not hold
+// (attributesFromVcg keeps the rest).
 std::vector<std::string> droppedAttributes(int mask, const LoadingMesh& m) {
     std::vector<std::string> dropped;
-    if (mask & Mask::IOM_VERTCOLOR) dropped.push_back("vertex colours");
-    if (mask & (Mask::IOM_VERTNORMAL | Mask::IOM_FACENORMAL | Mask::IOM_WEDGNORMAL)) dropped.push_back("normals");
-    if (mask & (Mask::IOM_VERTTEXCOORD | Mask::IOM_WEDGTEXCOORD)) dropped.push_back("texture coordinates");
-    if (mask & (Mask::IOM_FACECOLOR | Mask::IOM_WEDGCOLOR)) dropped.push_back("face colours");
-    if (mask & Mask::IOM_VERTQUALITY) dropped.push_back("vertex quality values");
-    if (mask & Mask::IOM_FACEQUALITY) dropped.push_back("face quality values");
+    if (mask & Mask::IOM_FACENORMAL) dropped.push_back("per-face normals");
+    if (mask & Mask::IOM_WEDGNORMAL) dropped.push_back("per-corner normals");
+    if (mask & Mask::IOM_WEDGCOLOR) dropped.push_back("per-corner colours");
     if (mask & Mask::IOM_VERTRADIUS) dropped.push_back("vertex radii");
     if (m.en > 0) dropped.push_back("edges");
     if (mask & Mask::IOM_CAMERA) dropped.push_back("camera parameters");
-    if (!m.textures.empty()) dropped.push_back("texture file names");
+    if (!m.normalmaps.empty()) dropped.push_back("normal map file names");
     return dropped;
+}
+
+// The PLY properties vcglib's importer reads into something a drm::Mesh
+// holds (or drops with a note of its own); anything else is named.
+bool knownPlyProperty(const std::string& property) {
+    static const char* const known[] = {
+        "vertex.x", "vertex.y", "vertex.z", "vertex.nx", "vertex.ny", "vertex.nz", "vertex.red", "vertex.green",
+        "vertex.blue", "vertex.alpha", "vertex.diffuse_red", "vertex.diffuse_green", "vertex.diffuse_blue",
+        "vertex.diffuse_alpha", "vertex.quality", "vertex.confidence", "vertex.radius", "vertex.texture_u",
+        "vertex.texture_v", "vertex.s", "vertex.t", "vertex.flags", "face.vertex_indices", "face.vertex_index",
+        "face.texcoord", "face.texnumber", "face.red", "face.green", "face.blue", "face.alpha", "face.quality",
+        "face.nx", "face.ny", "face.nz", "face.flags", "face.color"};
+    for (const char* name : known)
+        if (property == name) return true;
+    return false;
+}
+
+void addCustomPropertyNote(std::vector<std::string>& notes, const std::vector<std::string>& properties) {
+    std::vector<std::string> custom;
+    for (const std::string& property : properties)
+        if (!knownPlyProperty(property) && property.compare(0, 7, "vertex.") == 0) custom.push_back(property);
+        else if (!knownPlyProperty(property) && property.compare(0, 5, "face.") == 0) custom.push_back(property);
+    if (custom.size() > 6) {
+        const size_t more = custom.size() - 5;
+        custom.resize(5);
+        custom.push_back(std::to_string(more) + " more");
+    }
+    if (!custom.empty()) notes.push_back("the file's PLY properties " + joinList(custom) + " are not kept in .drm files");
+}
+
+// NaN or infinite normals and texture coordinates cannot be quantized; the
+// codec refuses them too, but here the message can name the file.
+void checkFinite(const std::vector<float>& values, size_t perItem, const char* item, const char* what) {
+    for (size_t i = 0; i < values.size(); ++i)
+        if (!std::isfinite(values[i]))
+            throw Error(std::string(item) + " " + std::to_string(i / perItem) + " has a non-finite " + what + " (" +
+                        std::to_string(values[i]) + ")");
+}
+
+void checkAttributesFinite(const drm::Mesh& mesh) {
+    checkFinite(mesh.normals, 3, "vertex", "normal");
+    checkFinite(mesh.texCoords, 2, "vertex", "texture coordinate");
+    checkFinite(mesh.cornerNormals, 3, "corner", "normal");
+    checkFinite(mesh.cornerTexCoords, 2, "corner", "texture coordinate");
 }
 
 // vcglib marks the inner edges of a split polygon as "faux"; a triangle with
@@ -87,6 +131,7 @@ void addPolygonNote(std::vector<std::string>& notes, size_t fromPolygons, size_t
 LoadedMesh fromLoadingMesh(const LoadingMesh& m, int mask) {
     LoadedMesh loaded;
     loaded.mesh = fromVcg(m);
+    attributesFromVcg(m, mask, loaded.mesh);
     addPolygonNote(loaded.notes, trianglesFromPolygons(mask, m), loaded.mesh.faceCount());
     addDroppedNote(loaded.notes, droppedAttributes(mask, m));
     return loaded;
@@ -102,7 +147,8 @@ void checkTriangleCount(uint64_t expected, const drm::Mesh& mesh) {
 }
 
 LoadedMesh loadPly(const std::string& path) {
-    const int64_t expectedTriangles = preflightPly(readFileBytes(path));
+    std::vector<std::string> properties;
+    const int64_t expectedTriangles = preflightPly(readFileBytes(path), &properties);
     LoadingMesh m;
     int mask = 0;
     const int status = vcg::tri::io::ImporterPLY<LoadingMesh>::Open(m, path.c_str(), mask);
@@ -110,6 +156,7 @@ LoadedMesh loadPly(const std::string& path) {
     if (vcg::tri::io::ImporterPLY<LoadingMesh>::ErrorCritical(status))
         throw Error(vcg::tri::io::ImporterPLY<LoadingMesh>::ErrorMsg(status));
     LoadedMesh loaded = fromLoadingMesh(m, mask);
+    addCustomPropertyNote(loaded.notes, properties);
     if (expectedTriangles >= 0) checkTriangleCount(uint64_t(expectedTriangles), loaded.mesh);
     if (loaded.mesh.faceCount() == 0) loaded.notes.push_back("the file has no faces");
     return loaded;
@@ -137,11 +184,52 @@ LoadedMesh loadStl(const std::string& path) {
     LoadedMesh loaded;
     const drm::Mesh soup = fromVcg(m);
     loaded.mesh = weldIdenticalPositions(soup);
+    // Welding changes the vertices, not the faces: face colours stay.
+    attributesFromVcg(m, mask & Mask::IOM_FACECOLOR, loaded.mesh);
+    loaded.mesh.textures.clear();
     loaded.notes.push_back("STL has no shared vertices: its " + std::to_string(soup.vertexCount()) +
                            " triangle corners were welded into " + std::to_string(loaded.mesh.vertexCount()) +
                            " vertices at identical positions");
-    addDroppedNote(loaded.notes, droppedAttributes(mask, m));
+    addDroppedNote(loaded.notes, droppedAttributes(mask & ~Mask::IOM_FACECOLOR, m));
     return loaded;
+}
+
+std::string directoryOf(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+// The .mtl file named by `mtllib`, beside the OBJ: its text goes into the
+// metadata ("obj.mtllib": the name as written, "obj.mtl": the text), its
+// map_Kd file names into the texture list, and each face gets its
+// material's texture when there are several.
+void addMaterialLibrary(const std::string& objPath, const std::string& mtllib, drm::Mesh& mesh,
+                        std::vector<std::string>& notes) {
+    if (mtllib.empty()) return;
+    mesh.metadata.emplace_back("obj.mtllib", mtllib);
+    std::string name = mtllib;
+    std::replace(name.begin(), name.end(), '\\', '/');
+    const std::string mtlPath = (!name.empty() && name[0] == '/') ? name : directoryOf(objPath) + name;
+    struct stat info;
+    if (::stat(mtlPath.c_str(), &info) != 0 || !S_ISREG(info.st_mode) || info.st_size > (64 << 20)) {
+        notes.push_back("the material library " + mtllib + " is not beside the file (or unreadable): only its name is kept");
+        return;
+    }
+    const std::vector<uint8_t> bytes = readFileBytes(mtlPath);
+    const std::string text(bytes.begin(), bytes.end());
+    mesh.metadata.emplace_back("obj.mtl", text);
+    const std::vector<std::pair<std::string, std::string>> textures = readMtlTextures(text);
+    std::vector<uint32_t> textureOfMaterial(mesh.materials.size(), 0);
+    for (const auto& entry : textures) {
+        size_t index = std::find(mesh.textures.begin(), mesh.textures.end(), entry.second) - mesh.textures.begin();
+        if (index == mesh.textures.size()) mesh.textures.push_back(entry.second);
+        for (size_t m = 0; m < mesh.materials.size(); ++m)
+            if (mesh.materials[m] == entry.first) textureOfMaterial[m] = uint32_t(index);
+    }
+    if (mesh.textures.size() > 1 && !mesh.faceMaterial.empty()) {
+        mesh.faceTexture.resize(mesh.faceMaterial.size());
+        for (size_t f = 0; f < mesh.faceMaterial.size(); ++f) mesh.faceTexture[f] = textureOfMaterial[mesh.faceMaterial[f]];
+    }
 }
 
 LoadedMesh loadObj(const std::string& path) {
@@ -150,11 +238,16 @@ LoadedMesh loadObj(const std::string& path) {
     LoadedMesh loaded;
     loaded.mesh = std::move(obj.mesh);
     addPolygonNote(loaded.notes, obj.trianglesFromPolygons, loaded.mesh.faceCount());
+    addMaterialLibrary(path, obj.mtllib, loaded.mesh, loaded.notes);
+    if (obj.cornersWithoutTexCoord > 0)
+        loaded.notes.push_back(std::to_string(obj.cornersWithoutTexCoord) +
+                               " face corners have no texture coordinate: they get (0, 0)");
+    if (obj.cornersWithoutNormal > 0)
+        loaded.notes.push_back(std::to_string(obj.cornersWithoutNormal) + " face corners have no normal: they get (0, 0, 0)");
+    if (obj.verticesWithoutColour > 0)
+        loaded.notes.push_back(std::to_string(obj.verticesWithoutColour) + " vertices have no colour: they get white");
+    if (obj.coloursOver255) loaded.notes.push_back("vertex colours above 1 were read as 0..255, not 0..1");
     std::vector<std::string> dropped;
-    if (obj.vertexColours) dropped.push_back("vertex colours");
-    if (obj.normals) dropped.push_back("normals");
-    if (obj.textureCoordinates) dropped.push_back("texture coordinates");
-    if (obj.materials) dropped.push_back("materials");
     if (obj.linesOrPoints) dropped.push_back("lines and points");
     addDroppedNote(loaded.notes, dropped);
     return loaded;
@@ -182,6 +275,7 @@ LoadedMesh loadMesh(const std::string& path) {
         else if (extension == ".obj") loaded = loadObj(path);
         else throw Error("unknown mesh format '" + extension + "' (expected .ply, .obj, .off or .stl)");
         if (loaded.mesh.vertexCount() == 0) throw Error("the file holds no vertices");
+        checkAttributesFinite(loaded.mesh);
         return loaded;
     } catch (const std::bad_alloc&) {
         throw Error(prefix + "out of memory (is the header's element count right?)");

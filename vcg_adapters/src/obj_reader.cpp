@@ -1,7 +1,10 @@
 // readObj: see obj_reader.h for why drm does not use vcglib's OBJ reader.
 #include "obj_reader.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <limits>
 
@@ -32,14 +35,58 @@ float parseCoordinate(const std::string& token, const std::string& where) {
 
 }  // namespace
 
+namespace {
+
+// One of a corner's references (`v`, `vt` or `vn`), resolved to 0-based.
+// Positive references are checked once the whole file is read (some
+// writers put faces before the data they use); negative ones are relative
+// to what was read so far, as the format says.
+struct Reference {
+    long index = -1;  // 0-based, -1: none
+};
+
+long resolveReference(const std::string& part, size_t known, const std::string& where, const char* what,
+                      const std::string& token) {
+    errno = 0;
+    char* endOfNumber = nullptr;
+    const long index = std::strtol(part.c_str(), &endOfNumber, 10);
+    if (endOfNumber == part.c_str() || *endOfNumber != '\0' || errno != 0 || index == 0)
+        throw Error(where + ": '" + token + "' is not a " + what + " reference");
+    if (index < 0) {
+        if (-index > long(known)) throw Error(where + ": " + what + " reference " + part + " goes before the first one");
+        return long(known) + index;
+    }
+    if (index - 1 > long(std::numeric_limits<uint32_t>::max() - 1))
+        throw Error(where + ": " + what + " reference " + part + " is too large");
+    return index - 1;
+}
+
+uint8_t colourByte(float value, float scale) {
+    const float scaled = value * scale;
+    if (!(scaled > 0)) return 0;
+    if (scaled >= 255) return 255;
+    return uint8_t(std::lround(scaled));
+}
+
+}  // namespace
+
 ObjContents readObj(const std::string& text) {
     ObjContents contents;
     drm::Mesh& mesh = contents.mesh;
-    // Positive indices are checked once all vertices are known (some writers
-    // put faces before the vertices they use); negative ones are relative to
-    // the vertices read so far, as the format says.
-    struct PendingCheck { long index; size_t line; };
+    struct PendingCheck { long index; size_t line; const char* what; };
     std::vector<PendingCheck> positiveIndices;
+    std::vector<float> texCoords, normals, colours;  // as read: 2, 3, 3 per item
+    std::vector<bool> hasColour;
+    std::vector<long> cornerTexCoord, cornerNormal;  // per triangle corner, -1: none
+    std::vector<uint32_t> faceMaterial;
+    uint32_t currentMaterial = 0;
+    bool anyMaterial = false;
+    auto materialIndex = [&mesh](const std::string& name) {
+        for (size_t i = 0; i < mesh.materials.size(); ++i)
+            if (mesh.materials[i] == name) return uint32_t(i);
+        mesh.materials.push_back(name);
+        return uint32_t(mesh.materials.size() - 1);
+    };
 
     size_t position = 0, lineNumber = 0;
     auto nextLine = [&]() {
@@ -66,45 +113,74 @@ ObjContents readObj(const std::string& text) {
         if (keyword == "v") {
             if (tokens.size() < 4) throw Error(where + ": a vertex needs three coordinates");
             for (int k = 1; k <= 3; ++k) mesh.positions.push_back(parseCoordinate(tokens[size_t(k)], where));
-            if (tokens.size() >= 7) contents.vertexColours = true;
+            const bool coloured = tokens.size() >= 7;
+            hasColour.push_back(coloured);
+            for (int k = 4; k <= 6; ++k) colours.push_back(coloured ? parseCoordinate(tokens[size_t(k)], where) : 1.0f);
         } else if (keyword == "vt") {
-            contents.textureCoordinates = true;
+            if (tokens.size() < 2) throw Error(where + ": a texture coordinate needs at least u");
+            texCoords.push_back(parseCoordinate(tokens[1], where));
+            texCoords.push_back(tokens.size() >= 3 ? parseCoordinate(tokens[2], where) : 0.0f);
+            if (!std::isfinite(texCoords[texCoords.size() - 2]) || !std::isfinite(texCoords.back()))
+                throw Error(where + ": texture coordinate " + std::to_string(texCoords.size() / 2) + " is not finite");
         } else if (keyword == "vn") {
-            contents.normals = true;
-        } else if (keyword == "usemtl" || keyword == "mtllib") {
-            contents.materials = true;
+            if (tokens.size() < 4) throw Error(where + ": a normal needs three coordinates");
+            for (int k = 1; k <= 3; ++k) normals.push_back(parseCoordinate(tokens[size_t(k)], where));
+            for (int k = 1; k <= 3; ++k)
+                if (!std::isfinite(normals[normals.size() - size_t(k)]))
+                    throw Error(where + ": normal " + std::to_string(normals.size() / 3) + " is not finite");
+        } else if (keyword == "usemtl") {
+            // A material name may hold blanks: everything after the keyword.
+            const size_t from = line.find_first_not_of(" \t", line.find("usemtl") + 6);
+            std::string name = from == std::string::npos ? "" : line.substr(from);
+            while (!name.empty() && (name.back() == ' ' || name.back() == '\t')) name.pop_back();
+            if (!anyMaterial && !faceMaterial.empty()) materialIndex("");  // faces before the first usemtl
+            anyMaterial = true;
+            currentMaterial = materialIndex(name);
+        } else if (keyword == "mtllib") {
+            const size_t from = line.find_first_not_of(" \t", line.find("mtllib") + 6);
+            std::string name = from == std::string::npos ? "" : line.substr(from);
+            while (!name.empty() && (name.back() == ' ' || name.back() == '\t')) name.pop_back();
+            if (contents.mtllib.empty()) contents.mtllib = name;
         } else if (keyword == "l" || keyword == "p") {
             contents.linesOrPoints = true;
         } else if (keyword == "f") {
             const size_t cornerCount = tokens.size() - 1;
             if (cornerCount < 3) throw Error(where + ": a face needs at least three corners");
             std::vector<uint32_t> corners;
+            std::vector<long> tex, nor;
             for (size_t c = 1; c < tokens.size(); ++c) {
-                const std::string vertexPart = tokens[c].substr(0, tokens[c].find('/'));
-                errno = 0;
-                char* endOfNumber = nullptr;
-                const long index = std::strtol(vertexPart.c_str(), &endOfNumber, 10);
-                if (endOfNumber == vertexPart.c_str() || *endOfNumber != '\0' || errno != 0 || index == 0)
-                    throw Error(where + ": '" + tokens[c] + "' is not a vertex reference");
-                const long known = long(mesh.vertexCount());
-                long resolved;
-                if (index < 0) {
-                    if (-index > known)
-                        throw Error(where + ": vertex reference " + vertexPart + " goes before the first vertex");
-                    resolved = known + index;
-                } else {
-                    if (index - 1 > long(std::numeric_limits<uint32_t>::max() - 1))
-                        throw Error(where + ": vertex reference " + vertexPart + " is too large");
-                    resolved = index - 1;
+                const std::string& token = tokens[c];
+                const size_t slash1 = token.find('/');
+                const std::string vertexPart = token.substr(0, slash1);
+                std::string texPart, normalPart;
+                if (slash1 != std::string::npos) {
+                    const size_t slash2 = token.find('/', slash1 + 1);
+                    texPart = token.substr(slash1 + 1, slash2 == std::string::npos ? std::string::npos : slash2 - slash1 - 1);
+                    if (slash2 != std::string::npos) normalPart = token.substr(slash2 + 1);
                 }
-                corners.push_back(uint32_t(resolved));
-                if (index > 0) positiveIndices.push_back(PendingCheck{index, lineNumber});
+                const long v = resolveReference(vertexPart, mesh.vertexCount(), where, "vertex", token);
+                corners.push_back(uint32_t(v));
+                if (vertexPart[0] != '-') positiveIndices.push_back(PendingCheck{v + 1, lineNumber, "vertex"});
+                long t = -1, n = -1;
+                if (!texPart.empty()) {
+                    t = resolveReference(texPart, texCoords.size() / 2, where, "texture coordinate", token);
+                    if (texPart[0] != '-') positiveIndices.push_back(PendingCheck{t + 1, lineNumber, "texture coordinate"});
+                }
+                if (!normalPart.empty()) {
+                    n = resolveReference(normalPart, normals.size() / 3, where, "normal", token);
+                    if (normalPart[0] != '-') positiveIndices.push_back(PendingCheck{n + 1, lineNumber, "normal"});
+                }
+                tex.push_back(t);
+                nor.push_back(n);
             }
             // Fan split in place: (0, i, i + 1) keeps the polygon's orientation.
             for (size_t i = 1; i + 1 < corners.size(); ++i) {
-                mesh.triangles.push_back(corners[0]);
-                mesh.triangles.push_back(corners[i]);
-                mesh.triangles.push_back(corners[i + 1]);
+                for (size_t c : {size_t(0), i, i + 1}) {
+                    mesh.triangles.push_back(corners[c]);
+                    cornerTexCoord.push_back(tex[c]);
+                    cornerNormal.push_back(nor[c]);
+                }
+                faceMaterial.push_back(currentMaterial);
             }
             if (cornerCount > 3) {
                 ++contents.polygons;
@@ -113,13 +189,100 @@ ObjContents readObj(const std::string& text) {
         }
         // Other statements (g, o, s, ...) carry nothing a .drm file keeps.
     }
+    const size_t counts[3] = {mesh.vertexCount(), texCoords.size() / 2, normals.size() / 3};
     for (const PendingCheck& check : positiveIndices) {
-        if (size_t(check.index) > mesh.vertexCount())
-            throw Error("line " + std::to_string(check.line) + ": face refers to vertex " +
-                        std::to_string(check.index) + ", but the file has " +
-                        std::to_string(mesh.vertexCount()) + " vertices");
+        const std::string what = check.what;
+        const size_t known = what == "vertex" ? counts[0] : what == "normal" ? counts[2] : counts[1];
+        if (size_t(check.index) > known)
+            throw Error("line " + std::to_string(check.line) + ": face refers to " + what + " " +
+                        std::to_string(check.index) + ", but the file has " + std::to_string(known) + " of them");
     }
+
+    // Vertex colours: 0..1 as the format's extension says; some writers
+    // give 0..255.
+    size_t coloured = 0;
+    float largest = 0;
+    for (size_t i = 0; i < hasColour.size(); ++i) {
+        if (!hasColour[i]) continue;
+        ++coloured;
+        for (int k = 0; k < 3; ++k) largest = std::max(largest, colours[3 * i + size_t(k)]);
+    }
+    if (coloured > 0) {
+        contents.coloursOver255 = largest > 1.0f;
+        const float scale = contents.coloursOver255 ? 1.0f : 255.0f;
+        contents.verticesWithoutColour = hasColour.size() - coloured;
+        mesh.colors.resize(4 * hasColour.size());
+        for (size_t i = 0; i < hasColour.size(); ++i) {
+            for (int k = 0; k < 3; ++k)
+                mesh.colors[4 * i + size_t(k)] = hasColour[i] ? colourByte(colours[3 * i + size_t(k)], scale) : 255;
+            mesh.colors[4 * i + 3] = 255;
+        }
+    }
+
+    const size_t cornerCount = mesh.triangles.size();
+    size_t withTex = 0, withNormal = 0;
+    for (size_t c = 0; c < cornerCount; ++c) {
+        if (cornerTexCoord[c] >= 0) ++withTex;
+        if (cornerNormal[c] >= 0) ++withNormal;
+    }
+    if (withTex > 0) {
+        contents.cornersWithoutTexCoord = cornerCount - withTex;
+        mesh.cornerTexCoords.assign(2 * cornerCount, 0.0f);
+        for (size_t c = 0; c < cornerCount; ++c)
+            if (cornerTexCoord[c] >= 0)
+                for (int k = 0; k < 2; ++k)
+                    mesh.cornerTexCoords[2 * c + size_t(k)] = texCoords[2 * size_t(cornerTexCoord[c]) + size_t(k)];
+    }
+    if (withNormal > 0) {
+        contents.cornersWithoutNormal = cornerCount - withNormal;
+        std::vector<float> corner(3 * cornerCount, 0.0f);
+        for (size_t c = 0; c < cornerCount; ++c)
+            if (cornerNormal[c] >= 0)
+                for (int k = 0; k < 3; ++k) corner[3 * c + size_t(k)] = normals[3 * size_t(cornerNormal[c]) + size_t(k)];
+        // Per vertex if every corner of each vertex has the same normal
+        // (the usual `f a//a` layout); vertices no face uses get 0, 0, 0.
+        std::vector<float> perVertex(3 * mesh.vertexCount(), 0.0f);
+        std::vector<bool> assigned(mesh.vertexCount(), false);
+        bool consistent = contents.cornersWithoutNormal == 0;
+        for (size_t c = 0; c < cornerCount && consistent; ++c) {
+            const uint32_t v = mesh.triangles[c];
+            if (!assigned[v]) {
+                assigned[v] = true;
+                for (int k = 0; k < 3; ++k) perVertex[3 * size_t(v) + size_t(k)] = corner[3 * c + size_t(k)];
+            } else {
+                for (int k = 0; k < 3; ++k)
+                    if (std::memcmp(&perVertex[3 * size_t(v) + size_t(k)], &corner[3 * c + size_t(k)], sizeof(float)) != 0)
+                        consistent = false;
+            }
+        }
+        if (consistent) mesh.normals = std::move(perVertex);
+        else mesh.cornerNormals = std::move(corner);
+    }
+    if (anyMaterial) mesh.faceMaterial = std::move(faceMaterial);
     return contents;
+}
+
+std::vector<std::pair<std::string, std::string>> readMtlTextures(const std::string& text) {
+    std::vector<std::pair<std::string, std::string>> textures;
+    std::string material;
+    size_t position = 0;
+    while (position < text.size()) {
+        size_t end = text.find('\n', position);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(position, end - position);
+        position = end + 1;
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+        const std::vector<std::string> tokens = splitBlanks(line);
+        if (tokens.size() < 2) continue;
+        if (tokens[0] == "newmtl") {
+            material = line.substr(line.find_first_not_of(" \t", line.find("newmtl") + 6));
+        } else if (tokens[0] == "map_Kd") {
+            // Options (-blendu on, -s 1 1 1, ...) come before the file name,
+            // which is the last token.
+            textures.emplace_back(material, tokens.back());
+        }
+    }
+    return textures;
 }
 
 }  // namespace vcgio

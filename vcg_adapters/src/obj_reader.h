@@ -17,21 +17,34 @@ namespace drm {
 namespace vcgio {
 
 struct ObjContents {
+    // Positions, triangles and what the file's statements give per vertex
+    // and corner: colours (`v x y z r g b`), corner texture coordinates
+    // (`vt`), normals (`vn`: per vertex when every corner of a vertex uses
+    // the same normal, per corner otherwise), materials (`usemtl` names in
+    // order of first use, faceMaterial for every face; faces before the first
+    // `usemtl` use the material ""). Metadata and textures come from the
+    // .mtl file, which the caller reads (see mtllib).
     drm::Mesh mesh;
+    std::string mtllib;                // the first `mtllib` file name, or ""
     size_t polygons = 0;               // faces with more than 3 corners
     size_t trianglesFromPolygons = 0;
-    // What the file holds beyond positions and faces (none of it is kept).
-    bool vertexColours = false;
-    bool textureCoordinates = false;
-    bool normals = false;
-    bool materials = false;
+    // What the file holds that is not kept, or kept only in part.
     bool linesOrPoints = false;
+    size_t cornersWithoutTexCoord = 0;  // in a file whose other corners have one (given 0, 0)
+    size_t cornersWithoutNormal = 0;    // likewise (given 0, 0, 0)
+    size_t verticesWithoutColour = 0;   // in a file whose other vertices have one (given white)
+    bool coloursOver255 = false;        // colours given as 0..255, not 0..1
 };
 
-// Reads OBJ text: `v x y z [r g b]`, `f a b c ...` with `a`, `a/t`, `a//n`
-// or `a/t/n` corners (1-based, or negative = relative to the last vertex).
-// Throws drm::Error("line N: reason").
+// Reads OBJ text: `v x y z [r g b]`, `vt u v [w]`, `vn x y z`, `usemtl`,
+// `mtllib`, `f a b c ...` with `a`, `a/t`, `a//n` or `a/t/n` corners
+// (1-based, or negative = relative to the last one read). Throws
+// drm::Error("line N: reason").
 ObjContents readObj(const std::string& text);
+
+// The texture file names (`map_Kd`) of each material of a .mtl file's text,
+// by material name; names are kept as written.
+std::vector<std::pair<std::string, std::string>> readMtlTextures(const std::string& text);
 
 }  // namespace vcgio
 }  // namespace drm

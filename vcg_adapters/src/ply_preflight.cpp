@@ -128,7 +128,7 @@ int64_t listLimit(const std::string& element, const std::string& property) {
 
 }  // namespace
 
-int64_t preflightPly(const std::vector<uint8_t>& bytes) {
+int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>* properties) {
     // Header: lines up to "end_header".
     const std::string marker = "end_header";
     size_t position = 0, lineNumber = 0;
@@ -188,6 +188,9 @@ int64_t preflightPly(const std::vector<uint8_t>& bytes) {
     }
     if (!sawEnd) throw Error("the header has no end_header line");
     if (!sawFormat) throw Error("the header names no format");
+    if (properties)
+        for (const Element& element : elements)
+            for (const Property& property : element.properties) properties->push_back(element.name + "." + property.name);
 
     // Body: every element in header order.
     int64_t vertexCount = 0;

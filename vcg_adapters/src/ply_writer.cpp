@@ -1,7 +1,9 @@
 // savePly: binary little-endian PLY, written directly (the format is simple
-// and this keeps vertex order, face order and corner order exactly).
+// and this keeps vertex order, face order and corner order exactly). The
+// property names are those vcglib's importer (and so MeshLab) reads back.
 #include "drm_vcg/file_io.h"
 #include "drm_vcg/mesh_io.h"
+#include "mesh_checks.h"
 
 #include <cstring>
 #include <string>
@@ -21,17 +23,8 @@ void appendFloat(std::string& out, float value) {
     appendLittleEndian32(out, bits);
 }
 
-void checkSizes(const std::string& path, const drm::Mesh& mesh, const FaceAttributes* attrs) {
-    if (mesh.positions.size() % 3 != 0 || mesh.triangles.size() % 3 != 0)
-        throw Error("cannot write " + path + ": mesh arrays are not a multiple of 3 long");
+void checkFaceAttributes(const std::string& path, const drm::Mesh& mesh, const FaceAttributes* attrs) {
     const size_t faces = mesh.faceCount();
-    for (size_t c = 0; c < mesh.triangles.size(); ++c) {
-        if (mesh.triangles[c] >= mesh.vertexCount())
-            throw Error("cannot write " + path + ": face " + std::to_string(c / 3) +
-                        " refers to missing vertex " + std::to_string(mesh.triangles[c]));
-    }
-    if (mesh.vertexCount() > 0x7FFFFFFFu)
-        throw Error("cannot write " + path + ": too many vertices for PLY's int indices");
     if (attrs && !attrs->rgb.empty() && attrs->rgb.size() != 3 * faces)
         throw Error("cannot write " + path + ": " + std::to_string(attrs->rgb.size()) +
                     " colour bytes for " + std::to_string(faces) + " faces");
@@ -40,38 +33,92 @@ void checkSizes(const std::string& path, const drm::Mesh& mesh, const FaceAttrib
                     " quality values for " + std::to_string(faces) + " faces");
 }
 
+// PLY comments end at the line's end, and vcglib drops blanks from texture
+// names: a name with either would not come back.
+std::string textureComment(const std::string& name) {
+    std::string clean;
+    for (char c : name)
+        if (c != '\n' && c != '\r') clean.push_back(c);
+    return "comment TextureFile " + clean + "\n";
+}
+
 }  // namespace
 
-void savePly(const std::string& path, const drm::Mesh& mesh, const FaceAttributes* attrs) {
-    checkSizes(path, mesh, attrs);
-    const bool withColour = attrs && !attrs->rgb.empty();
-    const bool withQuality = attrs && !attrs->quality.empty();
+std::vector<std::string> savePly(const std::string& path, const drm::Mesh& mesh, const FaceAttributes* attrs) {
+    checkMeshForWriting(path, mesh);
+    checkFaceAttributes(path, mesh, attrs);
+    const bool withNormals = !mesh.normals.empty();
+    const bool withColours = !mesh.colors.empty();
+    const bool withQuality = !mesh.quality.empty();
+    const bool withTexCoords = !mesh.texCoords.empty();
+    const bool withCornerTexCoords = !mesh.cornerTexCoords.empty();
+    const bool withTexNumber = !mesh.faceTexture.empty();
+    const bool rankColours = attrs && !attrs->rgb.empty();
+    const bool rankQuality = attrs && !attrs->quality.empty();
+    const bool withFaceColours = rankColours || !mesh.faceColors.empty();
+    const bool withFaceQuality = rankQuality || !mesh.faceQuality.empty();
 
     std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by drm " +
                          std::string(drm::version()) + "\n";
+    for (const std::string& texture : mesh.textures) header += textureComment(texture);
     header += "element vertex " + std::to_string(mesh.vertexCount()) + "\n";
     header += "property float x\nproperty float y\nproperty float z\n";
+    if (withNormals) header += "property float nx\nproperty float ny\nproperty float nz\n";
+    if (withColours) header += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
+    if (withQuality) header += "property float quality\n";
+    if (withTexCoords) header += "property float texture_u\nproperty float texture_v\n";
     header += "element face " + std::to_string(mesh.faceCount()) + "\n";
     header += "property list uchar int vertex_indices\n";
-    if (withColour) header += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-    if (withQuality) header += "property float quality\n";
+    if (withCornerTexCoords) header += "property list uchar float texcoord\n";
+    if (withTexNumber) header += "property int texnumber\n";
+    if (withFaceColours) {
+        header += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+        if (!rankColours) header += "property uchar alpha\n";
+    }
+    if (withFaceQuality) header += "property float quality\n";
     header += "end_header\n";
 
     std::string body;
     body.reserve(12 * mesh.vertexCount() + 17 * mesh.faceCount());
-    for (float coordinate : mesh.positions) appendFloat(body, coordinate);
+    for (size_t i = 0; i < mesh.vertexCount(); ++i) {
+        for (int k = 0; k < 3; ++k) appendFloat(body, mesh.positions[3 * i + size_t(k)]);
+        if (withNormals)
+            for (int k = 0; k < 3; ++k) appendFloat(body, mesh.normals[3 * i + size_t(k)]);
+        if (withColours)
+            for (int k = 0; k < 4; ++k) body.push_back(char(mesh.colors[4 * i + size_t(k)]));
+        if (withQuality) appendFloat(body, mesh.quality[i]);
+        if (withTexCoords)
+            for (int k = 0; k < 2; ++k) appendFloat(body, mesh.texCoords[2 * i + size_t(k)]);
+    }
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
         body.push_back(char(3));
-        for (int k = 0; k < 3; ++k) appendLittleEndian32(body, mesh.triangles[3 * f + k]);
-        if (withColour)
-            for (int k = 0; k < 3; ++k) body.push_back(char(attrs->rgb[3 * f + k]));
-        if (withQuality) appendFloat(body, attrs->quality[f]);
+        for (int k = 0; k < 3; ++k) appendLittleEndian32(body, mesh.triangles[3 * f + size_t(k)]);
+        if (withCornerTexCoords) {
+            body.push_back(char(6));
+            for (int k = 0; k < 6; ++k) appendFloat(body, mesh.cornerTexCoords[6 * f + size_t(k)]);
+        }
+        if (withTexNumber) appendLittleEndian32(body, mesh.faceTexture[f]);
+        if (rankColours) {
+            for (int k = 0; k < 3; ++k) body.push_back(char(attrs->rgb[3 * f + size_t(k)]));
+        } else if (withFaceColours) {
+            for (int k = 0; k < 4; ++k) body.push_back(char(mesh.faceColors[4 * f + size_t(k)]));
+        }
+        if (rankQuality) appendFloat(body, attrs->quality[f]);
+        else if (withFaceQuality) appendFloat(body, mesh.faceQuality[f]);
     }
 
     writeFileAtomically(path, [&](std::ostream& out) {
         out.write(header.data(), std::streamsize(header.size()));
         out.write(body.data(), std::streamsize(body.size()));
     });
+
+    std::vector<std::string> notes;
+    if (!mesh.cornerNormals.empty()) notes.push_back("PLY holds no per-corner normals: they are not in " + path + " (write .obj)");
+    if (!mesh.materials.empty()) notes.push_back("PLY holds no materials: they are not in " + path + " (write .obj)");
+    for (const auto& entry : mesh.metadata)
+        if (entry.first == "obj.mtllib")
+            notes.push_back("the material library " + entry.second + " is not written with PLY (write .obj)");
+    return notes;
 }
 
 }  // namespace vcgio

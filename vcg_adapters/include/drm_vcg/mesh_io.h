@@ -33,19 +33,40 @@ LoadedMesh loadMesh(const std::string& path);
 // True if loadMesh would try to read this file (by extension).
 bool isMeshFileName(const std::string& path);
 
-// Optional per-face data written by savePly. Either vector may be empty
-// (the property is then left out); otherwise it holds one entry per face
-// (rgb: three bytes per face).
+// Optional per-face data written by savePly instead of the mesh's own face
+// colours and quality (drm ranks' colouring). Either vector may be empty;
+// otherwise it holds one entry per face (rgb: three bytes per face).
 struct FaceAttributes {
     std::vector<uint8_t> rgb;
     std::vector<float> quality;
 };
 
-// Writes binary little-endian PLY: float x, y, z per vertex, uchar/int
-// vertex_indices per face, then the optional face red/green/blue (uchar)
-// and quality (float). Atomic: the file appears complete or not at all, and
-// an existing file is only replaced on success. Throws drm::Error.
-void savePly(const std::string& path, const drm::Mesh& mesh, const FaceAttributes* attrs = nullptr);
+// Writes binary little-endian PLY with the names vcglib and MeshLab read:
+// float x, y, z, then whichever the mesh carries of float nx, ny, nz, uchar
+// red, green, blue, alpha, float quality, float texture_u, texture_v per
+// vertex; uchar/int vertex_indices per face, then float texcoord (a list of
+// six: the corners' u, v), int texnumber, uchar red, green, blue, alpha,
+// float quality; a `comment TextureFile NAME` line per texture. Atomic: the
+// file appears complete or not at all, and an existing file is only
+// replaced on success. Returns what the mesh carries that PLY cannot hold
+// (per-corner normals, materials, metadata), as notes. Throws drm::Error.
+std::vector<std::string> savePly(const std::string& path, const drm::Mesh& mesh,
+                                 const FaceAttributes* attrs = nullptr);
+
+// Writes Wavefront OBJ: `v x y z [r g b]`, `vt` (per corner, or per vertex),
+// `vn` (per vertex, or per corner), `f v/t/n`, `mtllib` and `usemtl` groups
+// when the mesh has materials. The material library kept in the metadata
+// ("obj.mtllib", "obj.mtl") is written beside the OBJ under its own file
+// name (its folder part dropped); a mesh with textures but no library gets
+// one named after the OBJ (NAME.mtl, one material per texture). An existing
+// library with the same text is left alone; otherwise it is replaced, as
+// atomically as the OBJ. Returns what OBJ cannot hold (alpha, quality, face
+// colours), as notes. Throws drm::Error.
+std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh);
+
+// savePly or saveObj by the extension of `path` (.ply or .obj, any case);
+// throws drm::Error for any other.
+std::vector<std::string> saveMesh(const std::string& path, const drm::Mesh& mesh);
 
 }  // namespace vcgio
 }  // namespace drm
