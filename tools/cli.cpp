@@ -70,7 +70,7 @@ const std::vector<std::string>& encodeOptionNames() {
 }
 
 const std::vector<std::string>& encodeFlagNames() {
-    static const std::vector<std::string> names = {"--keep-vertex-order"};
+    static const std::vector<std::string> names = {"--keep-vertex-order", "--verify"};
     return names;
 }
 
@@ -91,6 +91,7 @@ int wholeNumber(const Arguments& args, const char* name) {
 drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
     drm::EncodeOptions options;
     options.keepVertexOrder = args.has("--keep-vertex-order");
+    options.verify = args.has("--verify");
     if (args.has("--bits")) options.bits = wholeNumber(args, "--bits");
     if (args.has("--refine-bits")) options.refineBits = wholeNumber(args, "--refine-bits");
     if (args.has("--normal-bits")) options.normalBits = wholeNumber(args, "--normal-bits");

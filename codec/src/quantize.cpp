@@ -66,6 +66,11 @@ std::vector<int32_t> quantize(const std::vector<float>& positions, const Grid& g
         if (!std::isfinite(x)) throw Error("vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
         const double t = std::floor((x - grid.origin[i % 3]) / grid.step + 0.5);
         q[i] = int32_t(std::min(std::max(t, 0.0), top));
+        // Near FLT_MAX the nearest grid point may lie past the float range
+        // (an axis shorter than the longest can end half a step below its
+        // last grid point): take the point below, so that every grid point
+        // decodes to a finite float.
+        while (q[i] > 0 && !std::isfinite(float(grid.origin[i % 3] + double(q[i]) * grid.step))) --q[i];
     }
     return q;
 }
