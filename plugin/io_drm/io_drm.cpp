@@ -68,11 +68,25 @@ bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshM
         if (!decoded.mesh.cornerNormals.empty()) attributeMask |= vcg::tri::io::Mask::IOM_VERTNORMAL;
         m.Enable(attributeMask);
         const int restored = drm::vcgio::attributesToVcg(decoded.mesh, m.cm);
+        // Per-vertex texture coordinates: MeshLab's exporters and filters
+        // read wedge ones once a texture is named (meshlabserver's PLY export
+        // of such a mesh asserts on disabled wedges), so the wedges carry a
+        // copy, as MeshLab's own PLY importer gives.
+        if (!decoded.mesh.texCoords.empty() && decoded.mesh.cornerTexCoords.empty()) {
+            m.updateDataMask(MeshModel::MM_WEDGTEXCOORD);
+            for (CFaceO& face : m.cm.face)
+                if (!face.IsD())
+                    for (int k = 0; k < 3; ++k) face.WT(k) = face.V(k)->T();
+        }
         mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX | restored;
         // Texture names are relative to the .drm file, as for PLY and OBJ.
         for (std::string& texture : m.cm.textures) std::replace(texture.begin(), texture.end(), '\\', '/');
         for (const std::string& note : drm_meshlab::openNotes(decoded.mesh, QFileInfo(fileName).absolutePath()))
-            Log(GLLogStream::WARNING, "drm: note: " + name + ": " + note);
+        {
+            const std::string line = "drm: note: " + name + ": " + note;
+            Log(GLLogStream::WARNING, line);
+            qInfo("%s", line.c_str());  // meshlabserver prints no log
+        }
         Log(GLLogStream::FILTER, "drm: opened " + name + ": " + drm_meshlab::statsSummary(decoded.stats));
         return true;
     } catch (const drm::Error& e) {
