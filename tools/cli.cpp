@@ -64,7 +64,7 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 
 const std::vector<std::string>& encodeOptionNames() {
     static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers",
-                                                   "--refine-bits"};
+                                                   "--refine-bits", "--index"};
     return names;
 }
 
@@ -87,8 +87,18 @@ int wholeNumber(const Arguments& args, const char* name) {
 
 }  // namespace
 
+drm::NeighbourIndex neighbourIndexFrom(const Arguments& args) {
+    if (!args.has("--index")) return drm::NeighbourIndex::Auto;
+    const std::string name = args.value("--index");
+    if (name == "auto") return drm::NeighbourIndex::Auto;
+    if (name == "grid") return drm::NeighbourIndex::Grid;
+    if (name == "flann") return drm::NeighbourIndex::Flann;
+    throw UsageError("--index takes auto, grid or flann, not '" + name + "'");
+}
+
 drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
     drm::EncodeOptions options;
+    options.index = neighbourIndexFrom(args);
     options.keepVertexOrder = args.has("--keep-vertex-order");
     if (args.has("--bits")) options.bits = wholeNumber(args, "--bits");
     if (args.has("--refine-bits")) options.refineBits = wholeNumber(args, "--refine-bits");

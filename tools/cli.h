@@ -46,6 +46,9 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args);
 // value, and flags (--keep-vertex-order).
 const std::vector<std::string>& encodeOptionNames();
 const std::vector<std::string>& encodeFlagNames();
+// --index auto|grid|flann (encode and decode): which spatial index runs the
+// neighbour searches; never changes a file or a decoded mesh.
+drm::NeighbourIndex neighbourIndexFrom(const Arguments& args);
 
 // "drm: note: ..." on stderr.
 void printNote(const std::string& note);

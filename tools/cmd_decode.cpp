@@ -14,8 +14,8 @@ namespace drm {
 namespace cli {
 
 const char* const kDecodeHelp =
-    "usage: drm decode IN.drm OUT.ply\n"
-    "       drm decode INPUTS... -o DIR [-j N]\n"
+    "usage: drm decode IN.drm OUT.ply [--index auto|grid|flann]\n"
+    "       drm decode INPUTS... -o DIR [-j N] [--index auto|grid|flann]\n"
     "\n"
     "Decompresses IN.drm into a binary PLY mesh (float x, y, z per vertex,\n"
     "triangles). Vertices come out in the order the file stores them: the\n"
@@ -31,7 +31,10 @@ const char* const kDecodeHelp =
     "\n"
     "options:\n"
     "  -o, --output-dir DIR  write DIR/NAME.ply for every input (several inputs, folders)\n"
-    "  -j, --jobs N      files decoded at once with -o (default: the number of cores)\n";
+    "  -j, --jobs N      files decoded at once with -o (default: the number of cores)\n"
+    "  --index I         spatial index for the neighbour searches: auto (default:\n"
+    "                    the faster), grid or flann (FLANN's kd-tree); the decoded\n"
+    "                    mesh is the same whichever runs\n";
 
 namespace {
 
@@ -41,11 +44,15 @@ struct DecodedFile {
 };
 
 // Reads, decodes and writes one file; throws drm::Error naming the input.
-DecodedFile decodeFile(const std::string& input, const std::string& output, ProgressBar* bar) {
+DecodedFile decodeFile(const std::string& input, const std::string& output, drm::NeighbourIndex index,
+                       ProgressBar* bar) {
     const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
     drm::Decoded decoded;
     try {
-        decoded = drm::decode(bytes, bar ? bar->callback() : drm::Progress());
+        drm::DecodeOptions options;
+        options.index = index;
+        if (bar) options.progress = bar->callback();
+        decoded = drm::decode(bytes.data(), bytes.size(), options);
     } catch (const drm::Error& e) {
         throw drm::Error("cannot decode " + input + ": " + e.what());
     }
@@ -63,7 +70,10 @@ bool isDrmFileName(const std::string& name) { return hasExtension(name, ".drm");
 }  // namespace
 
 int runDecode(const std::vector<std::string>& args) {
-    const Arguments parsed = parseArguments("decode", args, batchOptionNames(), {});
+    std::vector<std::string> valued = batchOptionNames();
+    valued.push_back("--index");
+    const Arguments parsed = parseArguments("decode", args, valued, {});
+    const drm::NeighbourIndex index = neighbourIndexFrom(parsed);
     if (parsed.has("-o") && parsed.has("--output-dir")) throw UsageError("give -o or --output-dir, not both");
     const int jobs = jobsFrom(parsed);
     if (parsed.has("-o") || parsed.has("--output-dir")) {
@@ -73,10 +83,10 @@ int runDecode(const std::vector<std::string>& args) {
         const std::vector<std::string> outputs = outputPaths(inputs, dir, ".ply");
         std::vector<BatchFile> files;
         for (size_t i = 0; i < inputs.size(); ++i) files.push_back({inputs[i], outputs[i], fileBytes(inputs[i])});
-        runBatch({"decoded", "bytes out", true}, files, jobs, [](const BatchFile& file) {
+        runBatch({"decoded", "bytes out", true}, files, jobs, [index](const BatchFile& file) {
             FileOutcome outcome;
             try {
-                const DecodedFile decoded = decodeFile(file.input, file.output, nullptr);
+                const DecodedFile decoded = decodeFile(file.input, file.output, index, nullptr);
                 outcome.ok = true;
                 outcome.line = decoded.line;
                 outcome.bytesOut = decoded.bytes;
@@ -91,7 +101,7 @@ int runDecode(const std::vector<std::string>& args) {
     const std::string& input = parsed.positional[0];
     const std::string& output = parsed.positional[1];
     ProgressBar bar("decoding " + fileName(input));
-    const DecodedFile decoded = decodeFile(input, output, &bar);
+    const DecodedFile decoded = decodeFile(input, output, index, &bar);
     std::printf("%s\n", decoded.line.c_str());
     return 0;
 }

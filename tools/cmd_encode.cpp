@@ -15,7 +15,7 @@ namespace cli {
 
 const char* const kEncodeHelp =
     "usage: drm encode IN OUT.drm [--bits N] [--predictor P] [--curvature on|off] [--geometry G] [--levers L]\n"
-    "                  [--keep-vertex-order]\n"
+    "                  [--keep-vertex-order] [--index auto|grid|flann]\n"
     "       drm encode INPUTS... -o DIR [-j N] [options as above]\n"
     "\n"
     "Compresses the triangle mesh IN (PLY, OBJ, OFF or STL) into OUT.drm.\n"
@@ -46,6 +46,9 @@ const char* const kEncodeHelp =
     "                    by default meshes under 20000 faces also try none\n"
     "  --keep-vertex-order  also store the input's vertex order, so that decoding\n"
     "                    gives vertices back in input order (costs bits)\n"
+    "  --index I         spatial index for the neighbour searches: auto (default:\n"
+    "                    the faster per search), grid or flann (FLANN's kd-tree);\n"
+    "                    the file is the same byte for byte whichever runs\n"
     "  -o, --output-dir DIR  write DIR/NAME.drm for every input (several inputs, folders)\n"
     "  -j, --jobs N      files encoded at once with -o (default: the number of cores)\n";
 

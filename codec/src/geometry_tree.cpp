@@ -10,7 +10,7 @@
 #include "quantize.h"
 #include "range_coder.h"
 #include "rank_coder.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 namespace {
@@ -419,31 +419,22 @@ struct UnionFind {
 
 // Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
 // children nearest first.
-std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, double* spacing) {
+std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, NeighbourIndex index,
+                                                  double* spacing) {
     const size_t n = grid.size() / 3;
     std::vector<std::vector<uint32_t>> children(n);
     *spacing = 1;
     if (n < 2) return children;
-    // The kNeighbours nearest of every vertex, exactly, on the integer grid.
-    const VertexIndex index(grid);
-    std::vector<uint32_t> neighbours(n * size_t(kNeighbours), kNone);
+    // The kNeighbours nearest of every vertex, exactly, on the integer grid
+    // (either index gives the same graph).
+    std::vector<uint32_t> neighbours;
+    std::vector<int64_t> distance2;
+    makeSpatialIndex(grid, index, IndexRole::NeighbourGraph)->nearestOfEach(kNeighbours, neighbours, distance2);
     std::vector<int64_t> fourth(n, 0);  // squared distance to the kNearest-th nearest, fixed point
-    {
-        std::vector<std::pair<int64_t, uint32_t>> found;
-        std::vector<uint32_t> scratch;
-        for (size_t v = 0; v < n; ++v) {
-            const FixedPoint p{int64_t(grid[3 * v]) * kSubUnits, int64_t(grid[3 * v + 1]) * kSubUnits,
-                               int64_t(grid[3 * v + 2]) * kSubUnits};
-            auto distance2 = [&](uint32_t w) {
-                const int64_t dx = int64_t(grid[3 * size_t(w)]) * kSubUnits - p.x;
-                const int64_t dy = int64_t(grid[3 * size_t(w) + 1]) * kSubUnits - p.y;
-                const int64_t dz = int64_t(grid[3 * size_t(w) + 2]) * kSubUnits - p.z;
-                return dx * dx + dy * dy + dz * dz;
-            };
-            index.nearestFew(p, kNeighbours, distance2, [v](uint32_t w) { return w != v; }, found, scratch);
-            for (size_t j = 0; j < found.size(); ++j) neighbours[v * kNeighbours + j] = found[j].second;
-            if (!found.empty()) fourth[v] = found[std::min<size_t>(kNearest, found.size()) - 1].first;
-        }
+    for (size_t v = 0; v < n; ++v) {
+        size_t found = 0;
+        while (found < size_t(kNeighbours) && neighbours[v * kNeighbours + found] != kNone) ++found;
+        if (found != 0) fourth[v] = distance2[v * kNeighbours + std::min<size_t>(kNearest, found) - 1];
     }
     {
         // The typical distance to the kNearest-th nearest neighbour: it sizes the cells of the near-point search.
@@ -558,9 +549,9 @@ std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& childre
 int cellBitsFor(double spacing, int bits) { return std::min(bits, bitLength(uint32_t(std::min(3 * spacing, 1e9)))); }
 constexpr int kCellBitsWidth = 5;
 
-GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits) {
+GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index) {
     double spacing = 1;
-    std::vector<std::vector<uint32_t>> children = spanningForest(grid, &spacing);
+    std::vector<std::vector<uint32_t>> children = spanningForest(grid, index, &spacing);
     orderChildrenForPrediction(grid, children);
     GeometryEncoding result;
     result.order = preorder(children);
