@@ -38,6 +38,9 @@ constexpr int kLeafSize = 8;
 // The first k of a nearest search: the answer and a few more, since some
 // of the nearest are usually not admissible.
 constexpr size_t kExtraCandidates = 4;
+// FLANN's result sets: a sorted list (insertion costs k) for a few, a heap
+// beyond (far ranks on sliver-rich meshes ask for hundreds).
+constexpr size_t kSortedListUpTo = 32;
 
 using Tree = flann::KDTreeSingleIndex<flann::L2_3D<float>>;
 
@@ -77,6 +80,17 @@ private:
     double certifiedBound(float lastDistance, double queryError) const;
     // Ranks `found` (vertex ids) exactly and keeps the first `count`
     // accepted strictly below bound; true when there were `count`.
+    // FLANN's k nearest of q into found_ and foundDistance_, nearest first.
+    template <class Result>
+    size_t search(const float q[3], size_t k, const flann::SearchParams& params) const {
+        Result result(k);
+        tree_->findNeighbors(result, q, params);
+        const size_t got = result.size();
+        found_.resize(got);
+        foundDistance_.resize(got);
+        result.copy(found_.data(), foundDistance_.data(), got, true);
+        return got;
+    }
     bool settle(const FixedPoint& p, const size_t* found, size_t got, double bound, size_t count,
                 VertexFilter accept, std::vector<RankedVertex>& out) const;
 
@@ -163,12 +177,8 @@ void FlannIndex::nearest(const FixedPoint& p, size_t count, VertexFilter accept,
     const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, true);
     for (size_t k = std::min(present_.size(), std::max(2 * count, count + kExtraCandidates));;
          k = std::min(present_.size(), 2 * k)) {
-        flann::KNNSimpleResultSet<float> result(k);
-        tree_->findNeighbors(result, q, params);
-        const size_t got = result.size();
-        found_.resize(got);
-        foundDistance_.resize(got);
-        result.copy(found_.data(), foundDistance_.data(), got);
+        const size_t got = k <= kSortedListUpTo ? search<flann::KNNSimpleResultSet<float>>(q, k, params)
+                                                : search<flann::KNNResultSet2<float>>(q, k, params);
         // Fewer than k, or every present vertex: nothing was left out.
         const bool all = got < k || got == present_.size();
         const double bound = all ? std::numeric_limits<double>::infinity()
