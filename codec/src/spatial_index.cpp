@@ -24,7 +24,7 @@ namespace {
 // nothing outside them can come nearer (exact on the integer grid).
 class GridIndex final : public SpatialIndex {
 public:
-    explicit GridIndex(const std::vector<int32_t>& grid) : grid_(grid), cells_(grid) {}
+    GridIndex(const std::vector<int32_t>& grid, int cellShift) : grid_(grid), cells_(grid, cellShift) {}
 
     const char* name() const override { return "grid"; }
     void remove(uint32_t v) override { cells_.remove(v); }
@@ -115,8 +115,9 @@ void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter acce
 
 }  // namespace
 
-std::unique_ptr<SpatialIndex> makeGridIndex(const std::vector<int32_t>& grid) {
-    return std::unique_ptr<SpatialIndex>(new GridIndex(grid));
+std::unique_ptr<SpatialIndex> makeGridIndex(const std::vector<int32_t>& grid, int cellShift) {
+    static_assert(VertexIndex::kChooseCellSize == -1, "makeGridIndex's default");
+    return std::unique_ptr<SpatialIndex>(new GridIndex(grid, cellShift));
 }
 
 std::unique_ptr<SpatialIndex> makeSpatialIndex(const std::vector<int32_t>& grid, NeighbourIndex choice,

@@ -99,7 +99,9 @@ enum class IndexRole { Traversal, NeighbourGraph };
 // this role (measured: docs/speed.md).
 NeighbourIndex resolveIndex(NeighbourIndex choice, IndexRole role);
 
-std::unique_ptr<SpatialIndex> makeGridIndex(const std::vector<int32_t>& grid);
+// cellShift: cells 2^cellShift grid units wide; by default sized to the
+// data (tests force others: no answer may depend on it).
+std::unique_ptr<SpatialIndex> makeGridIndex(const std::vector<int32_t>& grid, int cellShift = -1);
 std::unique_ptr<SpatialIndex> makeFlannIndex(const std::vector<int32_t>& grid);
 std::unique_ptr<SpatialIndex> makeSpatialIndex(const std::vector<int32_t>& grid, NeighbourIndex choice,
                                                IndexRole role);
