@@ -6,14 +6,17 @@
 //
 // The small meshes run under every option set; tests/data's meshes under a
 // few; the shared corpus (../shared/meshes beside the project, 64 meshes,
-// about a minute of CPU per index) with the default options, one ctest test
-// per mesh. Without the corpus those are skipped.
+// with the default options, one ctest test per mesh. Without the corpus
+// those are skipped. Two CAD meshes whose far ranks take FLANN over a minute
+// (crank 84 s, cycloidal 52 s of 190 s for the whole corpus on this 2-core
+// machine) run only with DRM_INDEX_TEST_ALL=1; all 64 agreed when last run.
 #include <drm/drm.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -95,6 +98,9 @@ class CorpusMesh : public ::testing::TestWithParam<std::string> {};
 TEST_P(CorpusMesh, SameFileAndMeshWithEitherIndex) {
     const std::string path = std::string(DRM_SHARED_MESHES_DIR) + "/" + GetParam();
     if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is missing";
+    const char* all = std::getenv("DRM_INDEX_TEST_ALL");
+    const bool slow = GetParam() == "crank.ply" || GetParam() == "cycloidal.ply";
+    if (slow && !(all && std::string(all) == "1")) GTEST_SKIP() << "slow with FLANN: set DRM_INDEX_TEST_ALL=1";
     expectIndexesAgree(drm_test::readTinyPly(path), drm::EncodeOptions());
 }
 
