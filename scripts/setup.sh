@@ -11,6 +11,7 @@ meshlab_dir="$here/third_party/meshlab-$meshlab_src_version"
 packages=(
   build-essential cmake ninja-build pkg-config git
   libgtest-dev libeigen3-dev
+  libflann-dev liblz4-dev   # the codec's kd-tree index (header-only; its headers include lz4.h)
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev
   xvfb xauth dpkg-dev imagemagick xdotool x11-apps
   clang libfuzzer-14-dev libclang-rt-14-dev

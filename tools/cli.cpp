@@ -65,7 +65,7 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 const std::vector<std::string>& encodeOptionNames() {
     static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers",
                                                    "--refine-bits", "--attributes", "--normal-bits", "--uv-bits",
-                                                   "--weld"};
+                                                   "--weld", "--index"};
     return names;
 }
 
@@ -88,8 +88,18 @@ int wholeNumber(const Arguments& args, const char* name) {
 
 }  // namespace
 
+drm::NeighbourIndex neighbourIndexFrom(const Arguments& args) {
+    if (!args.has("--index")) return drm::NeighbourIndex::Auto;
+    const std::string name = args.value("--index");
+    if (name == "auto") return drm::NeighbourIndex::Auto;
+    if (name == "grid") return drm::NeighbourIndex::Grid;
+    if (name == "flann") return drm::NeighbourIndex::Flann;
+    throw UsageError("--index takes auto, grid or flann, not '" + name + "'");
+}
+
 drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
     drm::EncodeOptions options;
+    options.index = neighbourIndexFrom(args);
     options.keepVertexOrder = args.has("--keep-vertex-order");
     options.verify = args.has("--verify");
     if (args.has("--bits")) options.bits = wholeNumber(args, "--bits");

@@ -46,6 +46,9 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args);
 // value, and flags (--keep-vertex-order).
 const std::vector<std::string>& encodeOptionNames();
 const std::vector<std::string>& encodeFlagNames();
+// --index auto|grid|flann (encode and decode): which spatial index runs the
+// neighbour searches; never changes a file or a decoded mesh.
+drm::NeighbourIndex neighbourIndexFrom(const Arguments& args);
 
 // Notes for what `mesh` carries among the attributes `options` asks for
 // that the encoded file does not hold (no section in stats), e.g. "the

@@ -15,8 +15,8 @@ namespace drm {
 namespace cli {
 
 const char* const kDecodeHelp =
-    "usage: drm decode IN.drm OUT.ply|OUT.obj\n"
-    "       drm decode INPUTS... -o DIR [-j N] [--format ply|obj]\n"
+    "usage: drm decode IN.drm OUT.ply|OUT.obj [--index auto|grid|flann]\n"
+    "       drm decode INPUTS... -o DIR [-j N] [--format ply|obj] [--index auto|grid|flann]\n"
     "\n"
     "Decompresses IN.drm into a mesh file, by OUT's extension: binary PLY\n"
     "(float x, y, z per vertex, triangles, and the attributes the file carries\n"
@@ -39,7 +39,10 @@ const char* const kDecodeHelp =
     "options:\n"
     "  -o, --output-dir DIR  write DIR/NAME.ply for every input (several inputs, folders)\n"
     "  --format F        with -o: ply (default) or obj\n"
-    "  -j, --jobs N      files decoded at once with -o (default: the number of cores)\n";
+    "  -j, --jobs N      files decoded at once with -o (default: the number of cores)\n"
+    "  --index I         spatial index for the neighbour searches: auto (default:\n"
+    "                    the faster), grid or flann (FLANN's kd-tree); the decoded\n"
+    "                    mesh is the same whichever runs\n";
 
 namespace {
 
@@ -50,11 +53,15 @@ struct DecodedFile {
 };
 
 // Reads, decodes and writes one file; throws drm::Error naming the input.
-DecodedFile decodeFile(const std::string& input, const std::string& output, ProgressBar* bar) {
+DecodedFile decodeFile(const std::string& input, const std::string& output, drm::NeighbourIndex index,
+                       ProgressBar* bar) {
     const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
     drm::Decoded decoded;
     try {
-        decoded = drm::decode(bytes, bar ? bar->callback() : drm::Progress());
+        drm::DecodeOptions options;
+        options.index = index;
+        if (bar) options.progress = bar->callback();
+        decoded = drm::decode(bytes.data(), bytes.size(), options);
     } catch (const drm::Error& e) {
         throw drm::Error("cannot decode " + input + ": " + e.what());
     }
@@ -74,9 +81,11 @@ bool isDrmFileName(const std::string& name) { return hasExtension(name, ".drm");
 int runDecode(const std::vector<std::string>& args) {
     std::vector<std::string> valued = batchOptionNames();
     valued.push_back("--format");
+    valued.push_back("--index");
     const Arguments parsed = parseArguments("decode", args, valued, {});
     const std::string format = parsed.value("--format", "ply");
     if (format != "ply" && format != "obj") throw UsageError("--format takes ply or obj, not '" + format + "'");
+    const drm::NeighbourIndex index = neighbourIndexFrom(parsed);
     if (parsed.has("-o") && parsed.has("--output-dir")) throw UsageError("give -o or --output-dir, not both");
     const int jobs = jobsFrom(parsed);
     if (parsed.has("-o") || parsed.has("--output-dir")) {
@@ -86,10 +95,10 @@ int runDecode(const std::vector<std::string>& args) {
         const std::vector<std::string> outputs = outputPaths(inputs, dir, "." + format);
         std::vector<BatchFile> files;
         for (size_t i = 0; i < inputs.size(); ++i) files.push_back({inputs[i], outputs[i], fileBytes(inputs[i])});
-        runBatch({"decoded", "bytes out", true}, files, jobs, [](const BatchFile& file) {
+        runBatch({"decoded", "bytes out", true}, files, jobs, [index](const BatchFile& file) {
             FileOutcome outcome;
             try {
-                const DecodedFile decoded = decodeFile(file.input, file.output, nullptr);
+                const DecodedFile decoded = decodeFile(file.input, file.output, index, nullptr);
                 outcome.ok = true;
                 outcome.line = decoded.line;
                 outcome.notes = decoded.notes;
@@ -108,7 +117,7 @@ int runDecode(const std::vector<std::string>& args) {
     ProgressBar bar("decoding " + fileName(input));
     if (!hasExtension(output, ".ply") && !hasExtension(output, ".obj"))
         throw UsageError("the output must be a .ply or .obj file, not '" + output + "'");
-    const DecodedFile decoded = decodeFile(input, output, &bar);
+    const DecodedFile decoded = decodeFile(input, output, index, &bar);
     printNotes(decoded.notes);
     std::printf("%s\n", decoded.line.c_str());
     return 0;

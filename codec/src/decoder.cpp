@@ -17,12 +17,12 @@
 #include "repair_section.h"
 #include "traversal.h"
 #include "vertex_order.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 
-Decoded decodeCore(const uint8_t* data, size_t size, const Progress& progressCallback, FileParts* partsOut) {
-    ProgressReporter progress(progressCallback);
+Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& options, FileParts* partsOut) {
+    ProgressReporter progress(options.progress);
     progress.stage("reading", 0.0);
     FileParts& parts = *partsOut;
     parts = readFile(data, size);
@@ -64,10 +64,11 @@ Decoded decodeCore(const uint8_t* data, size_t size, const Progress& progressCal
     // The face count is only a claim until the ranks deliver the faces: the
     // tables start small and grow as faces are decoded.
     const size_t expectedFaces = std::min<size_t>(faceCount, size_t(1) << 16);
-    VertexIndex candidates(result.quantized);
-    Traversal traversal(traversalVertices, expectedFaces, &candidates);
+    const std::unique_ptr<SpatialIndex> candidates =
+        makeSpatialIndex(result.quantized, options.index, IndexRole::Traversal);
+    Traversal traversal(traversalVertices, expectedFaces, candidates.get());
     EdgeModel model(result.quantized, header.grid.bits - refine.lowBits, header.predictor, header.curvature, header.levers,
-                    faceCount, candidates, traversal);
+                    faceCount, *candidates, traversal);
     RankDecoder coder(parts.connectivity, parts.connectivitySize, model.contextCount());
     Stats& stats = result.stats;
 

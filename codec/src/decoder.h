@@ -8,7 +8,7 @@
 
 namespace drm {
 
-Decoded decodeCore(const uint8_t* data, size_t size, const Progress& progress, FileParts* parts);
+Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& options, FileParts* parts);
 
 }  // namespace drm
 

@@ -59,7 +59,7 @@ double cosineSubtended(Vec3 a, Vec3 b, Vec3 v) {
 }  // namespace
 
 EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature,
-                     const Levers& levers, uint64_t faceCount, const VertexIndex& candidates,
+                     const Levers& levers, uint64_t faceCount, const SpatialIndex& candidates,
                      const Traversal& traversal)
     : grid_(grid),
       bits_(bits),

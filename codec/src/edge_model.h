@@ -14,7 +14,7 @@
 
 namespace drm {
 
-class VertexIndex;
+class SpatialIndex;
 
 struct EdgeForecast {
     FixedPoint prediction;
@@ -28,7 +28,7 @@ public:
     // faceCount sets how finely the coder contexts split (small meshes
     // cannot teach many contexts).
     EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature, const Levers& levers,
-              uint64_t faceCount, const VertexIndex& candidates, const Traversal& traversal);
+              uint64_t faceCount, const SpatialIndex& candidates, const Traversal& traversal);
 
     // How many coder contexts forecasts use (for the rank coder).
     int contextCount() const;

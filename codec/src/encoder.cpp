@@ -19,7 +19,7 @@
 #include "repair_section.h"
 #include "traversal.h"
 #include "vertex_order.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 
@@ -71,10 +71,10 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     const size_t faceCount = mesh.faceCount();
     const size_t looseCount = prepared.repairs.looseCount();
     const size_t duplicateCount = prepared.repairs.duplicateOf.size();
-    VertexIndex candidates(grid);
-    Traversal traversal(mesh.vertexCount(), faceCount, &candidates);
+    const std::unique_ptr<SpatialIndex> candidates = makeSpatialIndex(grid, options.index, IndexRole::Traversal);
+    Traversal traversal(mesh.vertexCount(), faceCount, candidates.get());
     EdgeModel model(grid, options.bits - prepared.lowBits, predictor, options.curvature, options.levers, faceCount,
-                    candidates, traversal);
+                    *candidates, traversal);
     RankEncoder coder(model.contextCount());
 
     FileHeader header;
@@ -215,7 +215,7 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
     if (options.geometry == GeometryCoder::SpanningTree || options.geometry == GeometryCoder::Refine) {
         // Scattered points (a soup of random triangles) predict no better
         // than raw bits: keep whichever section is smaller.
-        GeometryEncoding tree = encodeGeometryTree(vertexGrid, options.bits - lowBits);
+        GeometryEncoding tree = encodeGeometryTree(vertexGrid, options.bits - lowBits, options.index);
         if (lowBits > 0 || tree.bytes.size() < prepared.geometry.size()) {
             prepared.geometryCoder = lowBits > 0 ? GeometryCoder::Refine : GeometryCoder::SpanningTree;
             prepared.geometry = std::move(tree.bytes);

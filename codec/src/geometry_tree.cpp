@@ -11,7 +11,7 @@
 #include "quantize.h"
 #include "range_coder.h"
 #include "rank_coder.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 namespace {
@@ -137,14 +137,21 @@ public:
 private:
     static constexpr uint64_t kEmpty = ~uint64_t(0);  // keys use 63 bits
     size_t find(uint64_t key) const {
+        // The slot is the product's top bits, which every bit of the key
+        // reaches (the bits from 20 up, as taken before, never depended on
+        // the x field, bits 42 and up: cells sharing y and z collided and
+        // a third of predict() went to probing). Which slot a key gets
+        // changes nothing but speed.
         const size_t mask = keys_.size() - 1;
-        size_t slot = size_t((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+        size_t slot = size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - slotBits_));
         while (keys_[slot] != kEmpty && keys_[slot] != key) slot = (slot + 1) & mask;
         return slot;
     }
     void grow() {
         std::vector<uint64_t> keys(std::max<size_t>(64, 2 * keys_.size()), kEmpty);
         std::vector<uint32_t> heads(keys.size(), kNone);
+        slotBits_ = 0;
+        while ((size_t(1) << slotBits_) < keys.size()) ++slotBits_;
         keys.swap(keys_);
         heads.swap(heads_);
         for (size_t i = 0; i < keys.size(); ++i)
@@ -156,6 +163,7 @@ private:
     }
     std::vector<uint64_t> keys_;
     std::vector<uint32_t> heads_;
+    int slotBits_ = 0;  // keys_.size() == 2^slotBits_
     size_t used_ = 0;
 };
 
@@ -348,31 +356,22 @@ struct UnionFind {
 
 // Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
 // children nearest first.
-std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, double* spacing) {
+std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, NeighbourIndex index,
+                                                  double* spacing) {
     const size_t n = grid.size() / 3;
     std::vector<std::vector<uint32_t>> children(n);
     *spacing = 1;
     if (n < 2) return children;
-    // The kNeighbours nearest of every vertex, exactly, on the integer grid.
-    const VertexIndex index(grid);
-    std::vector<uint32_t> neighbours(n * size_t(kNeighbours), kNone);
+    // The kNeighbours nearest of every vertex, exactly, on the integer grid
+    // (either index gives the same graph).
+    std::vector<uint32_t> neighbours;
+    std::vector<int64_t> distance2;
+    makeSpatialIndex(grid, index, IndexRole::NeighbourGraph)->nearestOfEach(kNeighbours, neighbours, distance2);
     std::vector<int64_t> fourth(n, 0);  // squared distance to the kNearest-th nearest, fixed point
-    {
-        std::vector<std::pair<int64_t, uint32_t>> found;
-        std::vector<uint32_t> scratch;
-        for (size_t v = 0; v < n; ++v) {
-            const FixedPoint p{int64_t(grid[3 * v]) * kSubUnits, int64_t(grid[3 * v + 1]) * kSubUnits,
-                               int64_t(grid[3 * v + 2]) * kSubUnits};
-            auto distance2 = [&](uint32_t w) {
-                const int64_t dx = int64_t(grid[3 * size_t(w)]) * kSubUnits - p.x;
-                const int64_t dy = int64_t(grid[3 * size_t(w) + 1]) * kSubUnits - p.y;
-                const int64_t dz = int64_t(grid[3 * size_t(w) + 2]) * kSubUnits - p.z;
-                return dx * dx + dy * dy + dz * dz;
-            };
-            index.nearestFew(p, kNeighbours, distance2, [v](uint32_t w) { return w != v; }, found, scratch);
-            for (size_t j = 0; j < found.size(); ++j) neighbours[v * kNeighbours + j] = found[j].second;
-            if (!found.empty()) fourth[v] = found[std::min<size_t>(kNearest, found.size()) - 1].first;
-        }
+    for (size_t v = 0; v < n; ++v) {
+        size_t found = 0;
+        while (found < size_t(kNeighbours) && neighbours[v * kNeighbours + found] != kNone) ++found;
+        if (found != 0) fourth[v] = distance2[v * kNeighbours + std::min<size_t>(kNearest, found) - 1];
     }
     {
         // The typical distance to the kNearest-th nearest neighbour: it sizes the cells of the near-point search.
@@ -487,9 +486,9 @@ std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& childre
 int cellBitsFor(double spacing, int bits) { return std::min(bits, bitLength(uint32_t(std::min(3 * spacing, 1e9)))); }
 constexpr int kCellBitsWidth = 5;
 
-GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits) {
+GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index) {
     double spacing = 1;
-    std::vector<std::vector<uint32_t>> children = spanningForest(grid, &spacing);
+    std::vector<std::vector<uint32_t>> children = spanningForest(grid, index, &spacing);
     orderChildrenForPrediction(grid, children);
     GeometryEncoding result;
     result.order = preorder(children);

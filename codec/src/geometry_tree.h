@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "drm/drm.h"
+
 namespace drm {
 
 struct GeometryEncoding {
@@ -20,7 +22,8 @@ struct GeometryEncoding {
     std::vector<uint32_t> order;  // order[i] = input index of decoded vertex i
 };
 
-GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits);
+GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
+                                    NeighbourIndex index = NeighbourIndex::Auto);
 
 // Throws Error on data that does not decode to exactly vertexCount vertices
 // on the grid.

@@ -81,8 +81,14 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
 }
 
 Decoded decode(const uint8_t* data, size_t size, const Progress& progress) {
+    DecodeOptions options;
+    options.progress = progress;
+    return decode(data, size, options);
+}
+
+Decoded decode(const uint8_t* data, size_t size, const DecodeOptions& options) {
     FileParts parts;
-    return decodeCore(data, size, progress, &parts);
+    return decodeCore(data, size, options, &parts);
 }
 
 }  // namespace drm

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "quantize.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 
@@ -34,7 +34,7 @@ Vec3 baseApex(Predictor kind, Vec3 a, Vec3 b, Vec3 o) {
 }
 
 ApexPredictor::ApexPredictor(Predictor kind, bool curvature, const std::vector<int32_t>& grid,
-                             const VertexIndex& candidates, const Admissibility& admissible, PredictorTuning tuning)
+                             const SpatialIndex& candidates, const Admissibility& admissible, PredictorTuning tuning)
     : kind_(kind), curvature_(curvature), grid_(grid), candidates_(candidates), usable_(admissible),
       tuning_(tuning) {}
 

@@ -18,7 +18,7 @@
 
 namespace drm {
 
-class VertexIndex;
+class SpatialIndex;
 
 // The base predictors alone, from the edge (a, b) and the opposite vertex o
 // of the rebuilt triangle (a, b, o). Grid units.
@@ -40,7 +40,7 @@ struct PredictorTuning {
 
 class ApexPredictor {
 public:
-    ApexPredictor(Predictor kind, bool curvature, const std::vector<int32_t>& grid, const VertexIndex& candidates,
+    ApexPredictor(Predictor kind, bool curvature, const std::vector<int32_t>& grid, const SpatialIndex& candidates,
                   const Admissibility& admissible, PredictorTuning tuning = PredictorTuning());
 
     // The predicted apex of the triangle across edge, in grid units.
@@ -53,7 +53,7 @@ private:
     Predictor kind_;
     bool curvature_;
     const std::vector<int32_t>& grid_;
-    const VertexIndex& candidates_;
+    const SpatialIndex& candidates_;
     const Admissibility& usable_;
     PredictorTuning tuning_;
     std::vector<uint32_t> nearby_;  // scratch, reused by every query

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "drm/drm.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 namespace {
@@ -29,16 +29,11 @@ Vec3 toGridUnits(const FixedPoint& p) {  // for collectNear, which takes a super
 
 FixedPoint snapPrediction(Vec3 p, int bits) { return {snapAxis(p.x, bits), snapAxis(p.y, bits), snapAxis(p.z, bits)}; }
 
-RankSearch::RankSearch(const std::vector<int32_t>& grid, const VertexIndex& candidates,
+RankSearch::RankSearch(const std::vector<int32_t>& grid, const SpatialIndex& candidates,
                        const Admissibility& admissible)
     : grid_(grid), index_(candidates), admissible_(admissible) {}
 
-int64_t RankSearch::distance2(const FixedPoint& p, uint32_t v) const {
-    const int64_t dx = int64_t(grid_[3 * size_t(v)]) * kSubUnits - p.x;
-    const int64_t dy = int64_t(grid_[3 * size_t(v) + 1]) * kSubUnits - p.y;
-    const int64_t dz = int64_t(grid_[3 * size_t(v) + 2]) * kSubUnits - p.z;
-    return dx * dx + dy * dy + dz * dz;
-}
+int64_t RankSearch::distance2(const FixedPoint& p, uint32_t v) const { return fixedDistance2(grid_, p, v); }
 
 uint32_t RankSearch::rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred) {
     if (apex == preferred) return 1;
@@ -69,66 +64,13 @@ uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const Open
     return order[rank - 1].second;
 }
 
-// Rings of cells outwards from p's cell, until `count` admissible vertices
-// lie nearer than anything outside the rings can be: they are then the
-// nearest, exactly (ties ordered by index), whatever the cell size.
+// The index finds them exactly (ties ordered by index), whichever it is.
 const std::vector<RankedVertex>& RankSearch::nearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
                                                      uint32_t skip) {
-    ranked_.clear();
-    if (count == 0) return ranked_;
-    if (count > kFewNearest) return manyNearest(p, count, edge, skip);
-    // Admissibility costs edge look-ups: it is asked only of vertices that
-    // would enter the answer.
-    index_.nearestFew(
-        p, count, [&](uint32_t v) { return distance2(p, v); },
-        [&](uint32_t v) { return v != skip && admissible_(v, edge); }, ranked_, nearby_);
+    // Admissibility costs edge look-ups: the index asks it only of vertices
+    // that would enter the answer.
+    index_.nearest(p, count, [&](uint32_t v) { return v != skip && admissible_(v, edge); }, ranked_);
     return ranked_;
-}
-
-// For long rank lists (a decoder asked for a far rank): everything in the
-// rings, sorted, then admissibility in rank order. Sorting is what costs, so
-// it waits until the rings hold `count` vertices at all, and after a failed
-// attempt until they have doubled.
-const std::vector<RankedVertex>& RankSearch::manyNearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
-                                                         uint32_t skip) {
-    candidates_.clear();
-    auto collect = [&](const uint32_t* first, size_t n) {
-        for (size_t i = 0; i < n; ++i)
-            if (first[i] != skip) candidates_.emplace_back(distance2(p, first[i]), first[i]);
-    };
-    auto settle = [&](int64_t clear) {  // true once `count` admissible vertices are nearer than clear
-        std::sort(candidates_.begin(), candidates_.end());
-        ranked_.clear();
-        for (const RankedVertex& c : candidates_) {
-            if (c.first >= clear) return false;
-            if (admissible_(c.second, edge)) {
-                ranked_.push_back(c);
-                if (ranked_.size() == count) return true;
-            }
-        }
-        return false;
-    };
-    size_t settleFrom = count;
-    uint64_t cellsVisited = 0;
-    for (int ring = index_.firstRing(p);; ++ring) {
-        cellsVisited += VertexIndex::ringCellCount(ring);
-        if (cellsVisited > index_.cellBudget()) {
-            candidates_.clear();
-            nearby_.clear();
-            index_.collectAll(nearby_);
-            collect(nearby_.data(), nearby_.size());
-            settle(INT64_MAX);
-            return ranked_;
-        }
-        index_.forEachCellOfRing(p, ring, INT64_MAX, collect);
-        if (index_.ringsCoverGrid(p, ring)) {
-            settle(INT64_MAX);
-            return ranked_;
-        }
-        if (candidates_.size() < settleFrom) continue;
-        if (settle(index_.clearance2(p, ring))) return ranked_;
-        settleFrom = 2 * candidates_.size();
-    }
 }
 
 }  // namespace drm

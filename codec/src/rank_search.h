@@ -15,10 +15,9 @@
 
 #include "admissibility.h"
 #include "exact_math.h"
+#include "spatial_index.h"
 
 namespace drm {
-
-class VertexIndex;
 
 constexpr uint32_t kNoPreference = 0xFFFFFFFFu;
 
@@ -26,12 +25,9 @@ constexpr uint32_t kNoPreference = 0xFFFFFFFFu;
 // box so that squared distances cannot overflow.
 FixedPoint snapPrediction(Vec3 prediction, int bits);
 
-// (squared fixed-point distance, vertex), ordered as ranks are.
-using RankedVertex = std::pair<int64_t, uint32_t>;
-
 class RankSearch {
 public:
-    RankSearch(const std::vector<int32_t>& grid, const VertexIndex& candidates,
+    RankSearch(const std::vector<int32_t>& grid, const SpatialIndex& candidates,
                const Admissibility& admissible);
 
     // Encoder: the rank of apex (>= 1).
@@ -50,16 +46,11 @@ public:
     int64_t distance2(const FixedPoint& p, uint32_t v) const;
 
 private:
-    static constexpr size_t kFewNearest = 8;  // kept in a sorted list; more are sorted at the end
-    const std::vector<RankedVertex>& manyNearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
-                                                 uint32_t skip);
-
     const std::vector<int32_t>& grid_;
-    const VertexIndex& index_;
+    const SpatialIndex& index_;
     const Admissibility& admissible_;
     std::vector<uint32_t> nearby_;
-    std::vector<RankedVertex> candidates_;  // found by the search, any admissibility
-    std::vector<RankedVertex> ranked_;      // the answer
+    std::vector<RankedVertex> ranked_;  // the answer
 };
 
 }  // namespace drm

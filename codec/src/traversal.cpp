@@ -3,14 +3,14 @@
 #include <string>
 
 #include "drm/drm.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 namespace {
 uint64_t packEdge(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 }  // namespace
 
-Traversal::Traversal(size_t vertexCount, size_t expectedFaces, VertexIndex* candidates)
+Traversal::Traversal(size_t vertexCount, size_t expectedFaces, SpatialIndex* candidates)
     : halfEdges_(3 * expectedFaces + 16), openEdges_(vertexCount, 0), state_(vertexCount, kUntouched),
       candidates_(candidates) {
     triangles_.reserve(3 * expectedFaces);

@@ -17,7 +17,7 @@
 
 namespace drm {
 
-class VertexIndex;
+class SpatialIndex;
 
 // A directed edge (vi, vj) of a rebuilt triangle (vi, vj, opposite) whose
 // other side is still unknown. The triangle to find there is (vj, vi, apex).
@@ -28,7 +28,7 @@ struct OpenEdge {
 class Traversal {
 public:
     // candidates, if given, loses each vertex as soon as it is culled.
-    Traversal(size_t vertexCount, size_t expectedFaces, VertexIndex* candidates);
+    Traversal(size_t vertexCount, size_t expectedFaces, SpatialIndex* candidates);
 
     // Inserts a component's start triangle and queues its three edges.
     // Throws Error if a vertex is out of range, repeated, or already used.
@@ -79,7 +79,7 @@ private:
     std::deque<uint64_t> queue_;       // packed directed edges (vi, vj)
     std::vector<uint32_t> triangles_;
     size_t componentStart_ = 0;  // triangle count when the current component began
-    VertexIndex* candidates_;
+    SpatialIndex* candidates_;
 };
 
 }  // namespace drm

@@ -4,7 +4,7 @@
 
 #include "predictor.h"
 #include "traversal.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 namespace {
@@ -43,15 +43,15 @@ TEST(Predictor, DegenerateTrianglesStillPredict) {
 // Vertices: edge 0-1 along x, opposite vertex 2 behind (y > 0); candidates ahead at y = -6.
 struct Fan {
     std::vector<int32_t> grid = {0, 0, 0, 4, 0, 0, 2, 3, 0, 2, -6, 0, 30, -2, 0};
-    VertexIndex index{grid};
-    Traversal traversal{5, 4, &index};
+    std::unique_ptr<SpatialIndex> index = makeGridIndex(grid);
+    Traversal traversal{5, 4, index.get()};
     Admissibility admissible{traversal, false};
     OpenEdge edge{0, 1, 2};
 };
 
 TEST(Predictor, SizeCorrectionScalesToTheFirstVertexAhead) {
     Fan fan;
-    ApexPredictor predictor(Predictor::Midpoint, false, fan.grid, fan.index, fan.admissible);
+    ApexPredictor predictor(Predictor::Midpoint, false, fan.grid, *fan.index, fan.admissible);
     const Vec3 p = predictor.predict(fan.edge);
     // Vertex 4 at y = -2 lies outside the slab (x = 30); vertex 3 at y = -6 is the first ahead.
     EXPECT_NEAR(p.y, -6.0, 1e-9);
@@ -59,7 +59,8 @@ TEST(Predictor, SizeCorrectionScalesToTheFirstVertexAhead) {
 
 TEST(Predictor, SizeCorrectionLeavesThePredictionAloneWithNothingAhead) {
     std::vector<int32_t> grid = {0, 0, 0, 4, 0, 0, 2, 3, 0};
-    VertexIndex index(grid);
+    const std::unique_ptr<SpatialIndex> indexPtr = makeGridIndex(grid);
+    SpatialIndex& index = *indexPtr;
     Traversal traversal(3, 1, &index);
     Admissibility admissible(traversal, false);
     ApexPredictor predictor(Predictor::Midpoint, false, grid, index, admissible);
@@ -72,7 +73,8 @@ TEST(Predictor, CurvatureBendsOntoThePlaneOfTheNearbyVertices) {
     std::vector<int32_t> grid = {0, 0, 0, 4, 0, 0, 2, 3, 0};
     for (int x = 0; x <= 4; x += 2)
         for (int y = -2; y >= -6; y -= 2) grid.insert(grid.end(), {x, y, -y});
-    VertexIndex index(grid);
+    const std::unique_ptr<SpatialIndex> indexPtr = makeGridIndex(grid);
+    SpatialIndex& index = *indexPtr;
     Traversal traversal(grid.size() / 3, 4, &index);
     PredictorTuning noScaling;
     noScaling.slabWidening = -10;      // an empty slab: isolates the curvature step

@@ -10,23 +10,30 @@
 #include "drm/drm.h"
 #include "rank_search.h"
 #include "traversal.h"
-#include "vertex_index.h"
+#include "spatial_index.h"
 
 namespace drm {
 namespace {
 
 struct Scene {
     std::vector<int32_t> grid;
-    std::unique_ptr<VertexIndex> index;
+    std::unique_ptr<SpatialIndex> index;
     std::unique_ptr<Traversal> traversal;
     std::unique_ptr<Admissibility> admissible;
 };
 
-Scene randomScene(std::mt19937& rng, size_t count, int extent) {
+// Every test runs on both indexes: they must agree with brute force alike.
+const NeighbourIndex kIndexes[] = {NeighbourIndex::Grid, NeighbourIndex::Flann};
+
+std::unique_ptr<SpatialIndex> makeIndex(const std::vector<int32_t>& grid, NeighbourIndex kind) {
+    return kind == NeighbourIndex::Flann ? makeFlannIndex(grid) : makeGridIndex(grid);
+}
+
+Scene randomScene(std::mt19937& rng, size_t count, int extent, NeighbourIndex kind) {
     Scene s;
     std::uniform_int_distribution<int> coord(0, extent);
     for (size_t i = 0; i < 3 * count; ++i) s.grid.push_back(coord(rng));
-    s.index.reset(new VertexIndex(s.grid));
+    s.index = makeIndex(s.grid, kind);
     s.traversal.reset(new Traversal(count, 4, s.index.get()));
     s.admissible.reset(new Admissibility(*s.traversal, false));
     return s;
@@ -46,10 +53,12 @@ std::vector<uint32_t> bruteForceOrder(const Scene& s, RankSearch& search, Vec3 p
 }
 
 TEST(RankSearch, MatchesBruteForceWithManyTies) {
+  for (NeighbourIndex kind : kIndexes) {
     std::mt19937 rng(12345);
     const int bits = 12;
     for (int trial = 0; trial < 20; ++trial) {
-        Scene s = randomScene(rng, 400, 12);  // 400 points on a 13^3 grid: many duplicates and ties
+        Scene s = randomScene(rng, 400, 12, kind);  // 400 points on a 13^3 grid: many duplicates and ties
+        SCOPED_TRACE(s.index->name());
         RankSearch search(s.grid, *s.index, *s.admissible);
         std::uniform_real_distribution<double> at(-3.0, 15.0);
         for (int q = 0; q < 30; ++q) {
@@ -75,12 +84,15 @@ TEST(RankSearch, MatchesBruteForceWithManyTies) {
             EXPECT_EQ(search.vertexOfRank(fp, search.rankOf(fp, last, edge, preferred), edge, preferred), last);
         }
     }
+  }
 }
 
 TEST(RankSearch, FarPredictionsAndLargeGrids) {
+  for (NeighbourIndex kind : kIndexes) {
     std::mt19937 rng(7);
     const int bits = 21;
-    Scene s = randomScene(rng, 300, (1 << bits) - 1);
+    Scene s = randomScene(rng, 300, (1 << bits) - 1, kind);
+    SCOPED_TRACE(s.index->name());
     RankSearch search(s.grid, *s.index, *s.admissible);
     const OpenEdge edge{0, 1, 2};
     // Predictions far outside the box are clamped, never overflow.
@@ -92,13 +104,16 @@ TEST(RankSearch, FarPredictionsAndLargeGrids) {
             EXPECT_EQ(search.vertexOfRank(fp, uint32_t(k + 1), edge), order[k]);
         }
     }
+  }
 }
 
 TEST(RankSearch, CulledVerticesAreNotCandidates) {
+  for (NeighbourIndex kind : kIndexes) {
     // A closed tetrahedron plus two loose points: once its four faces are in,
     // all four of its vertices are culled and only the loose points remain.
     std::vector<int32_t> grid = {0, 0, 0, 10, 0, 0, 0, 10, 0, 0, 0, 10, 3, 3, 3, 50, 50, 50};
-    VertexIndex index(grid);
+    const std::unique_ptr<SpatialIndex> indexPtr = makeIndex(grid, kind);
+    SpatialIndex& index = *indexPtr;
     Traversal traversal(6, 4, &index);
     traversal.startComponent(0, 2, 1);
     const uint32_t apexes[3] = {3, 1, 3};  // across (0, 2), then (0, 3), then (2, 1)
@@ -115,6 +130,7 @@ TEST(RankSearch, CulledVerticesAreNotCandidates) {
     const OpenEdge other{0, 1, 2};
     EXPECT_EQ(search.vertexOfRank(FixedPoint(), 1, other), 4u);
     EXPECT_EQ(search.vertexOfRank(FixedPoint(), 2, other), 5u);
+  }
 }
 
 }  // namespace

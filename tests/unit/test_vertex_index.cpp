@@ -12,6 +12,7 @@
 #include "quantize.h"
 #include "rank_search.h"
 #include "traversal.h"
+#include "spatial_index.h"
 #include "vertex_index.h"
 
 namespace drm {
@@ -30,6 +31,13 @@ std::vector<int32_t> surfacePoints(std::mt19937& rng, size_t count) {
     }
     grid.insert(grid.end(), {4095, 4095, 4095});
     return grid;
+}
+
+// The nearest searches go through RankSearch, on the grid at each cell size
+// and on FLANN's kd-tree (kFlann in place of a cell size).
+constexpr int kFlann = -2;
+std::unique_ptr<SpatialIndex> indexFor(const std::vector<int32_t>& grid, int shift) {
+    return shift == kFlann ? makeFlannIndex(grid) : makeGridIndex(grid, shift);
 }
 
 int64_t squaredDistance(const std::vector<int32_t>& grid, uint32_t v, const FixedPoint& p) {
@@ -79,8 +87,9 @@ TEST(VertexIndex, NearestAgreesWithBruteForceAtEveryCellSize) {
     std::vector<uint32_t> doomed(n);
     for (uint32_t v = 0; v < n; ++v) doomed[v] = v;
     std::shuffle(doomed.begin(), doomed.end(), rng);
-    for (int shift : {VertexIndex::kChooseCellSize, 0, 4, 7, 12}) {
-        VertexIndex index(grid, shift);
+    for (int shift : {VertexIndex::kChooseCellSize, 0, 4, 7, 12, kFlann}) {
+        const std::unique_ptr<SpatialIndex> indexPtr = indexFor(grid, shift);
+        SpatialIndex& index = *indexPtr;
         Traversal traversal(n, 4, nullptr);  // nothing culled: removal goes through the index alone
         Admissibility admissible(traversal, false);
         RankSearch search(grid, index, admissible);
@@ -123,8 +132,9 @@ TEST(VertexIndex, TiesAndAFarOutlierAtEveryCellSize) {
             for (int z = 0; z < 3; ++z) grid.insert(grid.end(), {x * 2, y * 2, z * 2});
     grid.insert(grid.end(), {(1 << 21) - 1, (1 << 21) - 1, (1 << 21) - 1});
     const uint32_t n = uint32_t(grid.size() / 3);
-    for (int shift : {VertexIndex::kChooseCellSize, 0, 1, 2, 3, 5, 22, 26}) {
-        VertexIndex index(grid, shift);
+    for (int shift : {VertexIndex::kChooseCellSize, 0, 1, 2, 3, 5, 22, 26, kFlann}) {
+        const std::unique_ptr<SpatialIndex> indexPtr = indexFor(grid, shift);
+        SpatialIndex& index = *indexPtr;
         Traversal traversal(n, 4, nullptr);
         Admissibility admissible(traversal, false);
         RankSearch search(grid, index, admissible);

@@ -149,6 +149,13 @@ Levers parseLevers(const std::string& list);
 // The inverse: "all", "none" or the list of those on.
 std::string leversName(const Levers& levers);
 
+// Which spatial index answers the codec's neighbour searches: the grid of
+// cells, or FLANN's kd-tree. Both decide ranks by the same exact integer
+// distances, so files and decoded meshes are identical byte for byte;
+// only speed differs. Auto takes the faster for each search (the
+// traversal's, the geometry tree's neighbour graph).
+enum class NeighbourIndex : uint8_t { Auto = 0, Grid = 1, Flann = 2 };
+
 struct EncodeOptions {
     int bits = 12;                          // quantization bits per axis, 1..21
     Predictor predictor = Predictor::Auto;
@@ -190,6 +197,7 @@ struct EncodeOptions {
     // file: on tiny regular meshes (a 288-vertex torus) learning the levers'
     // contexts can cost a byte or two more than it saves.
     bool tryWithoutLevers = true;
+    NeighbourIndex index = NeighbourIndex::Auto;  // never changes the file
     Progress progress;                      // may be empty
 };
 
@@ -302,6 +310,11 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options = EncodeOptions())
 // Decodes a .drm buffer. Throws Error naming what is wrong (and where) for
 // truncated, corrupt or foreign data; never crashes or reads out of bounds.
 Decoded decode(const uint8_t* data, size_t size, const Progress& progress = Progress());
+struct DecodeOptions {
+    NeighbourIndex index = NeighbourIndex::Auto;  // never changes the decoded mesh
+    Progress progress;                            // may be empty
+};
+Decoded decode(const uint8_t* data, size_t size, const DecodeOptions& options);
 inline Decoded decode(const std::vector<uint8_t>& bytes, const Progress& progress = Progress()) {
     return decode(bytes.data(), bytes.size(), progress);
 }

@@ -1,0 +1,128 @@
+#include "spatial_index.h"
+
+#include <algorithm>
+
+#include "vertex_index.h"
+
+namespace drm {
+
+// Measured on the corpus (docs/speed.md, "Grid or FLANN"): the grid is
+// faster for the traversal's searches, each of which looks at a few dozen
+// vertices around one point while vertices are culled.
+constexpr NeighbourIndex kTraversalDefault = NeighbourIndex::Grid;
+// The k-nearest graph of the geometry tree: see docs/speed.md.
+constexpr NeighbourIndex kNeighbourGraphDefault = NeighbourIndex::Grid;
+
+NeighbourIndex resolveIndex(NeighbourIndex choice, IndexRole role) {
+    if (choice != NeighbourIndex::Auto) return choice;
+    return role == IndexRole::Traversal ? kTraversalDefault : kNeighbourGraphDefault;
+}
+
+namespace {
+
+// The grid of cells. Nearest searches walk rings of cells outwards until
+// nothing outside them can come nearer (exact on the integer grid).
+class GridIndex final : public SpatialIndex {
+public:
+    GridIndex(const std::vector<int32_t>& grid, int cellShift) : grid_(grid), cells_(grid, cellShift) {}
+
+    const char* name() const override { return "grid"; }
+    void remove(uint32_t v) override { cells_.remove(v); }
+    size_t presentCount() const override { return cells_.presentCount(); }
+    void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const override {
+        cells_.collectNear(q, radius, out);
+    }
+    void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
+    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) const override;
+
+private:
+    static constexpr size_t kFewNearest = 8;  // kept in a sorted list; more are sorted at the end
+    void manyNearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const;
+
+    const std::vector<int32_t>& grid_;
+    VertexIndex cells_;
+    mutable std::vector<uint32_t> scratch_;
+    mutable std::vector<RankedVertex> candidates_;
+};
+
+void GridIndex::nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const {
+    out.clear();
+    if (count == 0) return;
+    if (count > kFewNearest) return manyNearest(p, count, accept, out);
+    cells_.nearestFew(
+        p, count, [&](uint32_t v) { return fixedDistance2(grid_, p, v); }, accept, out, scratch_);
+}
+
+void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours,
+                              std::vector<int64_t>& distance2) const {
+    const size_t n = grid_.size() / 3;
+    neighbours.assign(n * count, kNoVertex);
+    distance2.assign(n * count, 0);
+    std::vector<RankedVertex> found;
+    for (size_t v = 0; v < n; ++v) {
+        nearest(fixedPointOf(grid_, uint32_t(v)), count, [v](uint32_t w) { return w != v; }, found);
+        for (size_t j = 0; j < found.size(); ++j) {
+            neighbours[v * count + j] = found[j].second;
+            distance2[v * count + j] = found[j].first;
+        }
+    }
+}
+
+// For long rank lists (a decoder asked for a far rank): everything in the
+// rings, sorted, then acceptance in rank order. Sorting is what costs, so
+// it waits until the rings hold `count` vertices at all, and after a failed
+// attempt until they have doubled.
+void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter accept,
+                            std::vector<RankedVertex>& out) const {
+    candidates_.clear();
+    auto collect = [&](const uint32_t* first, size_t n) {
+        for (size_t i = 0; i < n; ++i) candidates_.emplace_back(fixedDistance2(grid_, p, first[i]), first[i]);
+    };
+    auto settle = [&](int64_t clear) {  // true once `count` accepted vertices are nearer than clear
+        std::sort(candidates_.begin(), candidates_.end());
+        out.clear();
+        for (const RankedVertex& c : candidates_) {
+            if (c.first >= clear) return false;
+            if (accept(c.second)) {
+                out.push_back(c);
+                if (out.size() == count) return true;
+            }
+        }
+        return false;
+    };
+    size_t settleFrom = count;
+    uint64_t cellsVisited = 0;
+    for (int ring = cells_.firstRing(p);; ++ring) {
+        cellsVisited += VertexIndex::ringCellCount(ring);
+        if (cellsVisited > cells_.cellBudget()) {
+            candidates_.clear();
+            scratch_.clear();
+            cells_.collectAll(scratch_);
+            collect(scratch_.data(), scratch_.size());
+            settle(INT64_MAX);
+            return;
+        }
+        cells_.forEachCellOfRing(p, ring, INT64_MAX, collect);
+        if (cells_.ringsCoverGrid(p, ring)) {
+            settle(INT64_MAX);
+            return;
+        }
+        if (candidates_.size() < settleFrom) continue;
+        if (settle(cells_.clearance2(p, ring))) return;
+        settleFrom = 2 * candidates_.size();
+    }
+}
+
+}  // namespace
+
+std::unique_ptr<SpatialIndex> makeGridIndex(const std::vector<int32_t>& grid, int cellShift) {
+    static_assert(VertexIndex::kChooseCellSize == -1, "makeGridIndex's default");
+    return std::unique_ptr<SpatialIndex>(new GridIndex(grid, cellShift));
+}
+
+std::unique_ptr<SpatialIndex> makeSpatialIndex(const std::vector<int32_t>& grid, NeighbourIndex choice,
+                                               IndexRole role) {
+    return resolveIndex(choice, role) == NeighbourIndex::Flann ? makeFlannIndex(grid) : makeGridIndex(grid);
+}
+
+}  // namespace drm

@@ -1,0 +1,111 @@
+// The neighbour searches of the codec, behind one interface with two
+// implementations: the grid of cells (VertexIndex, spatial_index.cpp) and
+// FLANN's kd-tree (flann_index.cpp), the index the design names.
+//
+// An index only nominates candidates. What is nearest, and in which order,
+// is always decided by the same exact arithmetic: squared fixed-point
+// distances in 64-bit integers, ties broken by vertex index. The grid works
+// in those integers directly; FLANN's float distances are turned into a
+// certified bound (flann_index.cpp) and it is asked for more candidates
+// until the exact answer is provably among them. Both therefore give the
+// same files and decoded meshes, byte for byte; only speed differs, and
+// drm::NeighbourIndex chooses between them per role.
+//
+// An index refers to the grid it was built on, which must outlive it. Its
+// searches keep scratch buffers: one index serves one thread.
+#ifndef DRM_SPATIAL_INDEX_H
+#define DRM_SPATIAL_INDEX_H
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "drm/drm.h"
+#include "exact_math.h"
+
+namespace drm {
+
+// (squared fixed-point distance, vertex), ordered as ranks are.
+using RankedVertex = std::pair<int64_t, uint32_t>;
+
+constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
+
+// Squared distance from p to grid vertex v, in fixed-point units (1/16 of a
+// grid step): the one distance every search is decided by.
+inline int64_t fixedDistance2(const std::vector<int32_t>& grid, const FixedPoint& p, uint32_t v) {
+    const int64_t dx = int64_t(grid[3 * size_t(v)]) * kSubUnits - p.x;
+    const int64_t dy = int64_t(grid[3 * size_t(v) + 1]) * kSubUnits - p.y;
+    const int64_t dz = int64_t(grid[3 * size_t(v) + 2]) * kSubUnits - p.z;
+    return dx * dx + dy * dy + dz * dz;
+}
+
+inline FixedPoint fixedPointOf(const std::vector<int32_t>& grid, uint32_t v) {
+    return {int64_t(grid[3 * size_t(v)]) * kSubUnits, int64_t(grid[3 * size_t(v) + 1]) * kSubUnits,
+            int64_t(grid[3 * size_t(v) + 2]) * kSubUnits};
+}
+
+// Which vertices a nearest search may return: a reference to any callable
+// bool(uint32_t), which must outlive the call (a lambda passed as an
+// argument does). Asked only of vertices that could enter the answer.
+class VertexFilter {
+public:
+    template <class F>
+    VertexFilter(const F& f)  // NOLINT: implicit, so that lambdas pass as they are
+        : object_(&f), call_([](const void* object, uint32_t v) { return (*static_cast<const F*>(object))(v); }) {}
+    bool operator()(uint32_t v) const { return call_(object_, v); }
+
+private:
+    const void* object_;
+    bool (*call_)(const void*, uint32_t);
+};
+
+class SpatialIndex {
+public:
+    virtual ~SpatialIndex() = default;
+    virtual const char* name() const = 0;  // "grid" or "flann"
+
+    // Takes v out of every later search (the paper's vertex culling).
+    // Removing a vertex twice is a no-op.
+    virtual void remove(uint32_t v) = 0;
+    virtual size_t presentCount() const = 0;
+
+    // Every present vertex whose distance from q is at most radius (grid
+    // units), plus possibly some farther ones, in no particular order:
+    // callers apply their own exact test. out is cleared first.
+    virtual void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const = 0;
+
+    // The `count` present vertices nearest p that accept takes, exactly:
+    // (fixedDistance2, vertex) in increasing order (ties by index); fewer
+    // if fewer exist. out is cleared first.
+    virtual void nearest(const FixedPoint& p, size_t count, VertexFilter accept,
+                         std::vector<RankedVertex>& out) const = 0;
+
+    // For every vertex v of the grid, the `count` present vertices other
+    // than v nearest it, exactly as nearest() would give them:
+    // neighbours[v * count + j] (kNoVertex past the last) and their
+    // fixedDistance2 from v in distance2[v * count + j]. May use every core.
+    virtual void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours,
+                               std::vector<int64_t>& distance2) const = 0;
+};
+
+// What an index serves: the traversal's searches (rank search, size
+// correction, curvature), which remove culled vertices as they go, or the
+// geometry tree's k-nearest-neighbour graph, built once over all vertices.
+enum class IndexRole { Traversal, NeighbourGraph };
+
+// The index `choice` names, or for NeighbourIndex::Auto the faster one for
+// this role (measured: docs/speed.md).
+NeighbourIndex resolveIndex(NeighbourIndex choice, IndexRole role);
+
+// cellShift: cells 2^cellShift grid units wide; by default sized to the
+// data (tests force others: no answer may depend on it).
+std::unique_ptr<SpatialIndex> makeGridIndex(const std::vector<int32_t>& grid, int cellShift = -1);
+std::unique_ptr<SpatialIndex> makeFlannIndex(const std::vector<int32_t>& grid);
+std::unique_ptr<SpatialIndex> makeSpatialIndex(const std::vector<int32_t>& grid, NeighbourIndex choice,
+                                               IndexRole role);
+
+}  // namespace drm
+
+#endif  // DRM_SPATIAL_INDEX_H

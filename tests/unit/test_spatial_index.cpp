@@ -1,0 +1,148 @@
+// The two spatial indexes (the grid, FLANN's kd-tree) against brute force
+// on the exact integer definition: nearest vertices by (fixed-point squared
+// distance, index) with a filter, as vertices are removed; every vertex's
+// nearest others; the ball searches' superset. Clustered points with many
+// exact ties, coincident points, a far outlier, and coordinates beyond
+// float's 24 bits (FLANN's float distances then round even on the grid
+// points), where only the certified bound keeps FLANN exact.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+#include <random>
+#include <set>
+
+#include "spatial_index.h"
+
+namespace drm {
+namespace {
+
+std::unique_ptr<SpatialIndex> makeIndex(const std::vector<int32_t>& grid, NeighbourIndex kind) {
+    return kind == NeighbourIndex::Flann ? makeFlannIndex(grid) : makeGridIndex(grid);
+}
+
+// count points in [0, extent]^3, a third of them on a coarse lattice (ties),
+// some doubled, one far outlier at the top corner.
+std::vector<int32_t> cloud(std::mt19937& rng, size_t count, int32_t extent) {
+    std::uniform_int_distribution<int32_t> any(0, extent), lattice(0, 6);
+    std::vector<int32_t> grid;
+    for (size_t i = 0; i < count; ++i) {
+        if (i % 3 == 0) {
+            for (int k = 0; k < 3; ++k) grid.push_back(lattice(rng) * (extent / 8));
+        } else {
+            for (int k = 0; k < 3; ++k) grid.push_back(any(rng) / 4);
+        }
+        if (i % 11 == 0) grid.insert(grid.end(), grid.end() - 3, grid.end());
+    }
+    grid.insert(grid.end(), {extent, extent, extent});
+    return grid;
+}
+
+std::vector<RankedVertex> bruteNearest(const std::vector<int32_t>& grid, const std::vector<bool>& removed,
+                                       const FixedPoint& p, size_t count, uint32_t skip) {
+    std::vector<RankedVertex> all;
+    for (uint32_t v = 0; v < grid.size() / 3; ++v)
+        if (!removed[v] && v != skip && v % 5 != 1) all.emplace_back(fixedDistance2(grid, p, v), v);
+    std::sort(all.begin(), all.end());
+    if (all.size() > count) all.resize(count);
+    return all;
+}
+
+class BothIndexes : public ::testing::TestWithParam<int32_t> {};
+
+TEST_P(BothIndexes, NearestMatchesBruteForceAsVerticesAreRemoved) {
+    const int32_t extent = GetParam();
+    std::mt19937 rng{uint32_t(extent)};
+    const std::vector<int32_t> grid = cloud(rng, 700, extent);
+    const size_t n = grid.size() / 3;
+    for (NeighbourIndex kind : {NeighbourIndex::Grid, NeighbourIndex::Flann}) {
+        std::mt19937 local(99);
+        const std::unique_ptr<SpatialIndex> index = makeIndex(grid, kind);
+        SCOPED_TRACE(index->name());
+        std::vector<bool> removed(n, false);
+        std::uniform_int_distribution<int64_t> at(-int64_t(extent) * kSubUnits / 4, int64_t(extent) * kSubUnits * 5 / 4);
+        std::vector<RankedVertex> found;
+        for (int round = 0; round < 6; ++round) {
+            for (int q = 0; q < 60; ++q) {
+                FixedPoint p{at(local), at(local), at(local)};
+                if (q % 3 == 0) p = fixedPointOf(grid, uint32_t(local() % n));  // on a vertex: ties
+                const uint32_t skip = uint32_t(local() % n);
+                for (size_t count : {size_t(1), size_t(2), size_t(4), size_t(8), size_t(9), size_t(40)}) {
+                    index->nearest(p, count, [&](uint32_t v) { return v != skip && v % 5 != 1; }, found);
+                    ASSERT_EQ(found, bruteNearest(grid, removed, p, count, skip)) << "round " << round << " count " << count;
+                }
+            }
+            for (int r = 0; r < 100; ++r) {  // cull some, some twice
+                const uint32_t v = uint32_t(local() % n);
+                index->remove(v);
+                removed[v] = true;
+            }
+            EXPECT_EQ(index->presentCount(), size_t(std::count(removed.begin(), removed.end(), false)));
+        }
+    }
+}
+
+TEST_P(BothIndexes, NearestOfEachIsEveryVertexsNearestOthers) {
+    const int32_t extent = GetParam();
+    std::mt19937 rng(uint32_t(extent) + 1);
+    const std::vector<int32_t> grid = cloud(rng, 500, extent);
+    const size_t n = grid.size() / 3, count = 8;
+    const std::vector<bool> none(n, false);
+    for (NeighbourIndex kind : {NeighbourIndex::Grid, NeighbourIndex::Flann}) {
+        const std::unique_ptr<SpatialIndex> index = makeIndex(grid, kind);
+        SCOPED_TRACE(index->name());
+        std::vector<uint32_t> neighbours;
+        std::vector<int64_t> distance2;
+        index->nearestOfEach(count, neighbours, distance2);
+        ASSERT_EQ(neighbours.size(), n * count);
+        for (uint32_t v = 0; v < n; ++v) {
+            std::vector<RankedVertex> all;
+            for (uint32_t w = 0; w < n; ++w)
+                if (w != v) all.emplace_back(fixedDistance2(grid, fixedPointOf(grid, v), w), w);
+            std::sort(all.begin(), all.end());
+            for (size_t j = 0; j < count; ++j) {
+                ASSERT_EQ(neighbours[v * count + j], all[j].second) << "vertex " << v << " neighbour " << j;
+                ASSERT_EQ(distance2[v * count + j], all[j].first);
+            }
+        }
+    }
+}
+
+TEST_P(BothIndexes, CollectNearHoldsEveryPresentVertexInTheBall) {
+    const int32_t extent = GetParam();
+    std::mt19937 rng(uint32_t(extent) + 2);
+    const std::vector<int32_t> grid = cloud(rng, 600, extent);
+    const size_t n = grid.size() / 3;
+    for (NeighbourIndex kind : {NeighbourIndex::Grid, NeighbourIndex::Flann}) {
+        const std::unique_ptr<SpatialIndex> index = makeIndex(grid, kind);
+        SCOPED_TRACE(index->name());
+        for (uint32_t v = 0; v < n; v += 3) index->remove(v);
+        std::uniform_real_distribution<double> at(-0.2 * extent, 1.2 * extent), radius(0, 0.3 * extent);
+        std::vector<uint32_t> near;
+        for (int q = 0; q < 200; ++q) {
+            const Vec3 c{at(rng), at(rng), at(rng)};
+            const double r = q % 10 == 0 ? 0.0 : radius(rng);
+            index->collectNear(c, r, near);
+            const std::set<uint32_t> got(near.begin(), near.end());
+            EXPECT_EQ(got.size(), near.size()) << "a vertex listed twice";
+            for (uint32_t w = 0; w < n; ++w) {
+                const Vec3 d{grid[3 * w] - c.x, grid[3 * w + 1] - c.y, grid[3 * w + 2] - c.z};
+                if (w % 3 != 0 && norm2(d) <= r * r) ASSERT_TRUE(got.count(w)) << "vertex " << w << " query " << q;
+                if (w % 3 == 0) ASSERT_FALSE(got.count(w)) << "removed vertex " << w;
+            }
+        }
+    }
+}
+
+// 12-bit and 21-bit grids (real ones), and 2^25, past float's exact integers.
+INSTANTIATE_TEST_SUITE_P(Extents, BothIndexes, ::testing::Values(4095, (1 << 21) - 1, (1 << 25) - 1));
+
+TEST(SpatialIndex, AutoTakesTheMeasuredDefaults) {
+    EXPECT_EQ(resolveIndex(NeighbourIndex::Grid, IndexRole::NeighbourGraph), NeighbourIndex::Grid);
+    EXPECT_EQ(resolveIndex(NeighbourIndex::Flann, IndexRole::Traversal), NeighbourIndex::Flann);
+    EXPECT_NE(resolveIndex(NeighbourIndex::Auto, IndexRole::Traversal), NeighbourIndex::Auto);
+    EXPECT_NE(resolveIndex(NeighbourIndex::Auto, IndexRole::NeighbourGraph), NeighbourIndex::Auto);
+}
+
+}  // namespace
+}  // namespace drm
