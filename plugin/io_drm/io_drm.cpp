@@ -2,6 +2,7 @@
 
 #include "bridge/encode_parameters.h"
 #include "bridge/encoding.h"
+#include "bridge/host.h"
 #include "bridge/lost_attributes.h"
 #include "bridge/progress_bridge.h"
 
@@ -20,6 +21,12 @@ namespace {
 std::string localPath(const QString& fileName) { return QFile::encodeName(fileName).toStdString(); }
 
 std::string shownName(const QString& fileName) { return QFileInfo(fileName).fileName().toStdString(); }
+
+// Clears the status bar when an open or save ends, however it ends: the
+// progress callback leaves the codec's last stage there otherwise.
+struct StatusBarReset {
+    ~StatusBarReset() { drm_meshlab::clearStatusBar(); }
+};
 
 }  // namespace
 
@@ -52,15 +59,21 @@ bool DrmIOPlugin::fail(const std::string& message) {
     return false;
 }
 
+void DrmIOPlugin::report(const std::string& line) {
+    Log(GLLogStream::FILTER, line);
+    drm_meshlab::printToServerOutput(line);
+}
+
 bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshModel& m, int& mask,
                        const RichParameterList& /*parameters*/, vcg::CallBackPos* cb, QWidget* /*parent*/) {
     const std::string name = shownName(fileName);
+    const StatusBarReset statusBarReset;
     try {
         const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(localPath(fileName));
         const drm::Decoded decoded = drm::decode(bytes, drm_meshlab::progressTo(cb));
         drm::vcgio::toVcg(decoded.mesh, m.cm);
         mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX;
-        Log(GLLogStream::FILTER, "drm: opened " + name + ": " + drm_meshlab::statsSummary(decoded.stats));
+        report("drm: opened " + name + ": " + drm_meshlab::statsSummary(decoded.stats));
         return true;
     } catch (const drm::Error& e) {
         m.cm.Clear();
@@ -77,12 +90,15 @@ bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshM
 bool DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshModel& m, const int /*mask*/,
                        const RichParameterList& parameters, vcg::CallBackPos* cb, QWidget* /*parent*/) {
     const std::string name = shownName(fileName);
+    const StatusBarReset statusBarReset;
     try {
         drm::EncodeOptions options = drm_meshlab::encodeOptionsFrom(parameters);
         options.progress = drm_meshlab::progressTo(cb);
         const drm::Mesh mesh = drm::vcgio::fromVcg(m.cm);
         const drm::Encoded encoded = drm_meshlab::encodeMesh(mesh, options);
-        // Atomic: an existing file is replaced only by a complete new one.
+        // Atomic: an existing file is replaced only by a complete new one,
+        // with its mode and owner, through a symbolic link, and only if the
+        // user may write it (drm_vcg/file_io.h).
         drm::vcgio::writeFileAtomically(localPath(fileName), encoded.bytes);
 
         const std::vector<std::string> lost = drm_meshlab::lostAttributes(m);
@@ -90,10 +106,11 @@ bool DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshM
             const std::string note = "drm: note: " + name + " does not keep the mesh's " +
                                      drm_meshlab::joinedList(lost) + " (only positions, on a " +
                                      std::to_string(options.bits) + "-bit grid, and triangles)";
-            Log(GLLogStream::WARNING, note);
+            // A note, not an error: MeshLab's WARNING level is shown in red.
+            Log(GLLogStream::FILTER, note);
             qInfo("%s", note.c_str());
         }
-        Log(GLLogStream::FILTER, "drm: saved " + name + ": " + drm_meshlab::statsSummary(encoded.stats));
+        report("drm: saved " + name + ": " + drm_meshlab::statsSummary(encoded.stats));
         return true;
     } catch (const drm::Error& e) {
         return fail("cannot save " + name + ": " + e.what());
