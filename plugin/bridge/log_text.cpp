@@ -15,27 +15,21 @@ double bitsPerVertex(uint64_t bytes, uint64_t vertices) {
     return vertices == 0 ? 0.0 : 8.0 * double(bytes) / double(vertices);
 }
 
-// What each palette bucket means, for the legend.
-const char* bucketMeaning(int bucket) {
-    static const char* const meanings[drm::vcgio::kRankBucketCount] = {
-        "start triangle (stored, not ranked)", "rank 1 (the nearest candidate: almost free)", "rank 2",
-        "rank 3", "rank 4 and above"};
-    return meanings[bucket];
-}
-
 std::string percent(uint64_t n, uint64_t total) {
     char text[32];
     std::snprintf(text, sizeof(text), "%.2f%%", total ? 100.0 * double(n) / double(total) : 0.0);
     return text;
 }
 
-// TEXT padded with non-breaking spaces to WIDTH characters, on the left
-// (right-aligned) or the right.
+// TEXT padded to WIDTH characters, on the left (right-aligned) or the
+// right, its spaces and the padding non-breaking: the pane neither collapses
+// nor breaks them.
 std::string padded(const std::string& text, size_t width, bool alignRight) {
     std::string pad;
     for (size_t i = text.size(); i < width; ++i) pad += "&nbsp;";
-    const std::string escaped = escapeHtml(text);
-    return alignRight ? pad + escaped : escaped + pad;
+    std::string kept;
+    for (char c : escapeHtml(text)) kept += c == ' ' ? std::string("&nbsp;") : std::string(1, c);
+    return alignRight ? pad + kept : kept + pad;
 }
 
 }  // namespace
@@ -106,16 +100,14 @@ std::string rankLegendHtml(const std::vector<uint64_t>& facesPerBucket) {
     using namespace drm::vcgio;
     uint64_t faces = 0;
     for (uint64_t n : facesPerBucket) faces += n;
-    size_t meaningWidth = 0;
-    for (int bucket = 0; bucket < kRankBucketCount; ++bucket)
-        meaningWidth = std::max(meaningWidth, std::string(bucketMeaning(bucket)).size());
-    std::string html = "<b>Faces per colour</b> (" + std::to_string(faces) + " faces)";
+    // About 40 characters a line: the log pane beside the 3D view is narrow.
+    std::string html = "<b>Faces per colour</b> (" + std::to_string(faces) + " faces):";
     for (int bucket = 0; bucket < kRankBucketCount && size_t(bucket) < facesPerBucket.size(); ++bucket) {
         const uint64_t n = facesPerBucket[size_t(bucket)];
         const std::string hex = rankBucketHex(bucket);
         html += "<br><span style='background-color:" + hex + "; color:" + hex +
-                "'>&nbsp;&nbsp;&nbsp;&nbsp;</span>&nbsp;" + padded(bucketMeaning(bucket), meaningWidth, false) +
-                "&nbsp;" + padded(std::to_string(n), 10, true) + "&nbsp;" + padded(percent(n, faces), 8, true);
+                "'>&nbsp;&nbsp;&nbsp;&nbsp;</span>&nbsp;" + padded(rankBucketName(bucket), 15, false) +
+                padded(std::to_string(n), 9, true) + padded(percent(n, faces), 9, true);
     }
     return html;
 }

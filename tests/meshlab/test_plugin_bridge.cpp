@@ -130,6 +130,7 @@ TEST(RankPalette, HtmlLegendKeepsItsColumnsInAPaneThatCollapsesSpaces) {
     EXPECT_EQ(legend.find("  "), std::string::npos) << "runs of spaces collapse in the log pane";
     EXPECT_EQ(legend.find("<table"), std::string::npos) << "the log pane (QPlainTextEdit) lays out no tables";
     EXPECT_NE(legend.find("1000 faces"), std::string::npos);
+    EXPECT_NE(legend.find("rank&nbsp;1&nbsp;"), std::string::npos) << "a label may break across lines: " << legend;
     EXPECT_NE(legend.find("95.00%"), std::string::npos);
     // One line per colour after the heading.
     size_t breaks = 0;
