@@ -77,7 +77,7 @@ parts_add_up() {
     local total sum
     total=$(echo "$1" | sed -n 's/.*: \([0-9]*\) bytes, [0-9.]* bpv = .*/\1/p')
     [ -n "$total" ] || fail "no 'T bytes, X bpv = ...' in: $1"
-    sum=$(echo "$1" | sed 's/.* bpv = //; s/;.*//' | grep -o '[0-9][0-9]* B (' | tr -dc '0-9\n' | paste -sd+ | bc)
+    sum=$(echo "$1" | sed 's/.* bpv = //; s/;.*//' | grep -o '[0-9][0-9]* B (' | awk '{ sum += $1 } END { print sum }')
     [ "$sum" = "$total" ] || fail "the parts add up to $sum bytes, not $total: $1"
 }
 
