@@ -29,6 +29,15 @@ batch_usage() {
   exit "$code"
 }
 
+# batch_display "$@": without an X display, runs the calling script again
+# under one xvfb-run for the whole batch (one virtual display, not one per
+# file: faster, and fewer chances to race other xvfb-run -a for a number).
+batch_display() {
+  [ -z "${DISPLAY:-}" ] || return 0
+  command -v xvfb-run >/dev/null || batch_fail "no DISPLAY and no xvfb-run (apt-get install xvfb xauth)"
+  exec xvfb-run -a bash "$0" "$@"
+}
+
 # batch_arguments "$@": sets batch_stop_on_error and batch_args (DIR OUTDIR).
 batch_arguments() {
   batch_stop_on_error=0
@@ -57,12 +66,8 @@ batch_setup() {
   if [ -z "$batch_server" ] || [ ! -x "$batch_server" ]; then
     batch_fail "meshlabserver not found: set MESHLABSERVER or install MeshLab 2020.09 (scripts/setup.sh)"
   fi
-  # meshlabserver needs an X display even without a window.
-  batch_display=()
-  if [ -z "${DISPLAY:-}" ]; then
-    command -v xvfb-run >/dev/null || batch_fail "no DISPLAY and no xvfb-run (apt-get install xvfb xauth)"
-    batch_display=(xvfb-run -a)
-  fi
+  # meshlabserver needs an X display even without a window: batch_display
+  # has given the whole batch one where there was none.
   batch_files=0
   batch_bytes_in=0
   batch_bytes_out=0
@@ -82,7 +87,7 @@ batch_convert() {
   tmp="$(dirname "$out")/.batch-$$-$(basename "$out")"  # same extension: it picks the plugin
   log=$(mktemp)
   rm -f "$tmp"
-  "${batch_display[@]}" "$batch_server" -i "$in" -o "$tmp" "$@" >"$log" 2>&1 || status=$?
+  "$batch_server" -i "$in" -o "$tmp" "$@" >"$log" 2>&1 || status=$?
   if [ ! -s "$tmp" ]; then
     rm -f "$tmp"
     local reason

@@ -15,6 +15,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/batch-common.sh"
 
 batch_help="compresses every .ply/.obj/.off/.stl in DIR to OUTDIR/NAME.drm"
 batch_arguments "$@"
+batch_display "$@"
 batch_setup "${batch_args[0]}" "${batch_args[1]}"
 
 shopt -s nullglob nocaseglob

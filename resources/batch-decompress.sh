@@ -14,6 +14,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/batch-common.sh"
 
 batch_help="decompresses every .drm in DIR to OUTDIR/NAME.ply"
 batch_arguments "$@"
+batch_display "$@"
 batch_setup "${batch_args[0]}" "${batch_args[1]}"
 
 shopt -s nullglob nocaseglob
