@@ -83,8 +83,16 @@ batch_size() { stat -L -c %s "$1"; }  # -L: the size of what a symlink points to
 batch_convert() {
   local in=$1 out=$2
   shift 2
-  local tmp log status=0
-  tmp="$(dirname "$out")/.batch-$$-$(basename "$out")"  # same extension: it picks the plugin
+  local tmp log status=0 target
+  # Replacing OUT as drm does: through a symbolic link to its target, and
+  # only a file the user may write; the new file keeps the old one's mode
+  # (and owner, where permitted).
+  target=$(realpath -m -- "$out")
+  if [ -e "$target" ] && [ ! -w "$target" ]; then
+    batch_failed "$in" "cannot write $(basename "$out"): the file is read-only for you"
+    return 0
+  fi
+  tmp="$(dirname "$target")/.batch-$$-$(basename "$target")"  # same extension: it picks the plugin
   log=$(mktemp)
   rm -f "$tmp"
   "$batch_server" -i "$in" -o "$tmp" "$@" >"$log" 2>&1 || status=$?
@@ -100,17 +108,19 @@ batch_convert() {
     rm -f "$log"
     reason=${reason//"$(basename "$tmp")"/"$(basename "$out")"}  # the user knows the final name
     if [ "$status" -ge 128 ] && [ "$status" -ne 255 ]; then reason="meshlabserver crashed (exit $status). $reason"; fi
-    reason=$(echo "$reason" | tr '\n' ' ' | sed 's/ *$//')
-    if [ "$batch_stop_on_error" -eq 1 ]; then batch_fail "stopped at $(basename "$in"): $reason"; fi
-    echo "$batch_name: failed: $(basename "$in"): $reason" >&2
-    batch_failures+=("$(basename "$in"): $reason")
+    batch_failed "$in" "$reason"
     return 0
   fi
   # The plugin's size line: "drm: saved NAME: V vertices, ..." (or opened).
   local vertices
   vertices=$(sed -n 's/^drm: \(saved\|opened\) [^:]*: \([0-9]*\) vertices, .*/\2/p' "$log" | head -1)
   rm -f "$log"
-  mv -f "$tmp" "$out"
+  if [ -e "$target" ]; then
+    chown --reference="$target" "$tmp" 2>/dev/null || chgrp --reference="$target" "$tmp" 2>/dev/null || true
+    chmod --reference="$target" "$tmp"
+  fi
+  mv -f "$tmp" "$target"
+  sync "$(dirname "$target")" 2>/dev/null || true  # the rename lives in the folder
   local size_in size_out
   size_in=$(batch_size "$in")
   size_out=$(batch_size "$out")
@@ -132,6 +142,16 @@ batch_convert() {
 # batch_bpv BYTES VERTICES: "13.44", the .drm file's bits per vertex.
 batch_bpv() {
   awk -v b="$1" -v v="$2" 'BEGIN { if (v == 0) print "-"; else printf "%.2f", 8 * b / v }'
+}
+
+# batch_failed IN REASON: reports a file that failed; stops the batch with
+# --stop-on-error, else remembers it for the summary.
+batch_failed() {
+  local reason
+  reason=$(echo "$2" | tr '\n' ' ' | sed 's/ *$//')
+  if [ "$batch_stop_on_error" -eq 1 ]; then batch_fail "stopped at $(basename "$1"): $reason"; fi
+  echo "$batch_name: failed: $(basename "$1"): $reason" >&2
+  batch_failures+=("$(basename "$1"): $reason")
 }
 
 # "4.1:1" or "1:3.2" style: how much smaller or larger the output is.

@@ -307,6 +307,7 @@ replace_files)
     grep -q "^drm: error: cannot save locked.drm: cannot write .*locked.drm: the file is read-only for you" server.txt ||
         fail "no refusal of the read-only file: $(tail -5 server.txt)"
     grep -q "has NOT been saved" server.txt || fail "meshlabserver did not report the failed save: $(tail -5 server.txt)"
+    refusal=$(grep -o 'the file is read-only.*' server.txt | head -1)
     [ "$(cat out/locked.drm)" = old ] || fail "the read-only locked.drm was replaced"
     [ "$(stat -c %a out/locked.drm)" = 444 ] || fail "locked.drm's mode changed"
     # The same through MeshLab's own PLY writer, for comparison.
@@ -315,7 +316,25 @@ replace_files)
     user_server 0 -i "$work/in.ply" -o "$work/out/locked.ply"
     [ "$(cat out/locked.ply)" = old ] || fail "MeshLab's PLY export replaced a read-only file (so refusing is not its convention)"
     no_temporary_files "$work/out"
-    echo "replace_files (as $(as_user id -un)): mode 600 and 640 kept, link written through, read-only refused: $(grep -o 'the file is read-only.*' server.txt | head -1)"
+    # The batch scripts replace files the same way.
+    mkdir -p batch-in batch-out
+    cp "$data/torus.ply" "$data/fandisk.ply" "$data/nefertiti.ply" batch-in/
+    echo old >batch-out/fandisk.drm && chmod 600 batch-out/fandisk.drm
+    echo old >batch-out/real.drm && ln -s real.drm batch-out/nefertiti.drm
+    echo old >batch-out/torus.drm && chmod 444 batch-out/torus.drm
+    [ "$(id -u)" -ne 0 ] || chown -R nobody:"$(id -gn nobody)" batch-in batch-out
+    MESHLABSERVER="$server" as_user bash "$src/resources/batch-compress.sh" batch-in batch-out >batch.txt 2>&1
+    code=$?
+    [ "$code" -eq 1 ] || fail "batch-compress onto a read-only torus.drm exited $code: $(cat batch.txt)"
+    grep -q "^  torus.ply: cannot write torus.drm: the file is read-only for you" batch.txt || fail "no refusal listed: $(cat batch.txt)"
+    [ "$(cat batch-out/torus.drm)" = old ] || fail "the batch replaced the read-only torus.drm"
+    [ "$(stat -c %a batch-out/fandisk.drm)" = 600 ] || fail "the batch made fandisk.drm mode $(stat -c %a batch-out/fandisk.drm)"
+    [ -L batch-out/nefertiti.drm ] || fail "the batch replaced the link nefertiti.drm by a file"
+    [ "$(head -c 3 batch-out/real.drm)" != old ] || fail "the batch did not write through the link"
+    no_temporary_files "$work/batch-out"
+    leftovers=(batch-out/.batch-*)
+    [ ${#leftovers[@]} -eq 0 ] || fail "a temporary file was left: ${leftovers[*]}"
+    echo "replace_files (as $(as_user id -un)): mode 600 and 640 kept, link written through, read-only refused: $refusal; the batch scripts alike"
     ;;
 *)
     fail "unknown case"
