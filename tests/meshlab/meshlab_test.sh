@@ -113,6 +113,11 @@ install)
     grep -q "^usage: .*meshlab-user-install.sh PREFIX" help.txt || fail "--help printed no usage: $(cat help.txt)"
     bash "$src/scripts/meshlab-user-install.sh" >/dev/null 2>&1
     [ $? -eq 2 ] || fail "meshlab-user-install.sh without a PREFIX did not exit 2"
+    bash "$src/scripts/meshlab-system-install.sh" --help >help.txt 2>&1 || fail "meshlab-system-install.sh --help exited $?"
+    grep -q "^usage: " help.txt || fail "meshlab-system-install.sh --help printed no usage: $(cat help.txt)"
+    # The filter script says which meshlabserver can run it.
+    grep -q "PREFIX/bin/meshlabserver" "$src/resources/colorize-by-rank.mlx" ||
+        fail "colorize-by-rank.mlx does not name the private prefix's meshlabserver"
     echo "install: private MeshLab in $prefix, filter listed, --help exits 0"
     ;;
 export_import)
