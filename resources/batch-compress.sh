@@ -1,18 +1,22 @@
 #!/usr/bin/env bash
-# Usage: resources/batch-compress.sh DIR OUTDIR
+# Usage: resources/batch-compress.sh [--stop-on-error] DIR OUTDIR
 #
 # Compresses every mesh in DIR (.ply .obj .off .stl, not recursive) to
 # OUTDIR/NAME.drm through MeshLab (meshlabserver with drm's io plugin, the
 # plugin's default options: 12 bits, auto predictor). Prints a line per file
-# and a summary; stops at the first file that cannot be compressed (for
-# example a NaN coordinate), saying why. Existing files in OUTDIR are
+# and a summary with bits per vertex; a file that cannot be compressed (for
+# example a NaN coordinate) is reported, the others are still compressed,
+# the failures are listed at the end and the exit code is 1
+# (--stop-on-error: stop at the first). Existing files in OUTDIR are
 # replaced only by complete new ones.
 batch_name=batch-compress
 # shellcheck source=resources/batch-common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/batch-common.sh"
 
-[ $# -eq 2 ] || batch_usage "compresses every .ply/.obj/.off/.stl in DIR to OUTDIR/NAME.drm"
-batch_setup "$1" "$2"
+batch_help="compresses every .ply/.obj/.off/.stl in DIR to OUTDIR/NAME.drm"
+batch_arguments "$@"
+batch_display "$@"
+batch_setup "${batch_args[0]}" "${batch_args[1]}"
 
 shopt -s nullglob nocaseglob
 inputs=("$batch_in"/*.ply "$batch_in"/*.obj "$batch_in"/*.off "$batch_in"/*.stl)

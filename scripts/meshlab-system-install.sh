@@ -16,6 +16,12 @@ our_plugins=(libio_drm.so libfilter_drm.so)
 
 fail() { echo "meshlab-system-install: $*" >&2; exit 1; }
 
+if [ "${1:-}" = "-h" ] || [ "${1:-}" = "--help" ]; then
+  echo "usage: sudo $0 [PLUGIN_DIR | --remove]   (PLUGIN_DIR defaults to $here/build/plugins)"
+  echo "  Installs drm's plugins into the system MeshLab ($target); --remove takes them out."
+  echo "  Without root: scripts/meshlab-user-install.sh PREFIX."
+  exit 0
+fi
 [ $# -le 1 ] || fail "usage: $0 [PLUGIN_DIR | --remove]"
 [ -d "$target" ] || fail "$target not found: install Debian's meshlab package (scripts/setup.sh)"
 [ -w "$target" ] || fail "cannot write to $target: needs root (sudo $0 $*), or use scripts/meshlab-user-install.sh PREFIX"

@@ -13,8 +13,17 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-if [ $# -lt 1 ] || [ $# -gt 2 ] || [ "${1:-}" = "-h" ] || [ "${1:-}" = "--help" ]; then
-  echo "usage: $0 PREFIX [PLUGIN_DIR]   (PLUGIN_DIR defaults to $here/build/plugins)" >&2
+usage() {
+  echo "usage: $0 PREFIX [PLUGIN_DIR]   (PLUGIN_DIR defaults to $here/build/plugins)"
+  echo "  Installs MeshLab 2020.09 with drm's plugins into PREFIX, without root:"
+  echo "  then run PREFIX/bin/meshlab, or PREFIX/bin/meshlabserver for scripts."
+}
+if [ "${1:-}" = "-h" ] || [ "${1:-}" = "--help" ]; then
+  usage
+  exit 0
+fi
+if [ $# -lt 1 ] || [ $# -gt 2 ] || [ "${1#-}" != "$1" ]; then
+  usage >&2
   exit 2
 fi
 prefix=$1

@@ -14,6 +14,7 @@ packages=(
   libflann-dev liblz4-dev   # the codec's kd-tree index (header-only; its headers include lz4.h)
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev
   xvfb xauth dpkg-dev imagemagick xdotool x11-apps
+  util-linux   # setpriv: the file-permission tests run as the user nobody
   clang libfuzzer-14-dev libclang-rt-14-dev
   libdraco-dev draco libmeshoptimizer-dev libopenctm-dev libzstd-dev   # drm-peer-bench only
   python3-matplotlib python3-numpy   # tools/bench/make_plots.py, make_big_mesh.py, measure_scale.py

@@ -7,6 +7,9 @@ namespace drm_meshlab {
 const char* const kBitsParameter = "QuantizationBits";
 const char* const kPredictorParameter = "Predictor";
 const char* const kKeepVertexOrderParameter = "KeepVertexOrder";
+const char* const kBitsLabel = "Quantization bits";
+const char* const kPredictorLabel = "Apex predictor";
+const char* const kKeepVertexOrderLabel = "Keep vertex order";
 
 namespace {
 
@@ -29,26 +32,24 @@ int defaultPredictorIndex() {
 }  // namespace
 
 void addQuantizationAndPredictor(RichParameterList& parameters) {
-    parameters.addParam(RichInt(
-        kBitsParameter, drm::EncodeOptions().bits, "Quantization bits",
-        QString("Bits per coordinate axis (%1 to %2). Positions are snapped to a grid of "
-                "2^bits - 1 steps over the longest side of the bounding box; 12 is the paper's setting.")
-            .arg(kMinBits)
-            .arg(kMaxBits)));
+    // MeshLab shows this text both as the tooltip and, under Help, beside
+    // the field in a narrow column the save dialog cuts after two lines:
+    // short and complete; README.md's MeshLab section says more.
+    parameters.addParam(RichInt(kBitsParameter, drm::EncodeOptions().bits, kBitsLabel,
+                                QString("Grid bits per axis, %1 to %2 (12: the paper's). Lossless on that grid.")
+                                    .arg(kMinBits)
+                                    .arg(kMaxBits)));
     QStringList names;
     for (drm::Predictor p : kPredictorChoices) names << drm::predictorName(p);
-    parameters.addParam(RichEnum(kPredictorParameter, defaultPredictorIndex(), names, "Apex predictor",
-                                 "Where the traversal expects each new triangle's third vertex: "
-                                 "parallelogram (reflect the opposite vertex over the edge), midpoint "
-                                 "(above the edge's middle), or auto (chosen per mesh, as in the paper)."));
+    parameters.addParam(RichEnum(kPredictorParameter, defaultPredictorIndex(), names, kPredictorLabel,
+                                 "Guess of each new triangle's apex; auto picks the better per mesh."));
 }
 
 void addKeepVertexOrder(RichParameterList& parameters) {
     parameters.addParam(RichBool(kKeepVertexOrderParameter, drm::EncodeOptions().keepVertexOrder,
-                                 "Keep vertex order",
-                                 "Store the permutation back to this mesh's vertex order, so the file "
-                                 "opens with the same vertex indices (costs a few bits per vertex). "
-                                 "Off: vertices come back in the order the geometry coder chose."));
+                                 kKeepVertexOrderLabel,
+                                 "Reopen with this vertex order. Costs 5-12 bits per vertex; "
+                                 "the save log says how much."));
 }
 
 drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters) {
@@ -56,14 +57,14 @@ drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters) {
     if (parameters.hasParameter(kBitsParameter)) {
         const int bits = parameters.getInt(kBitsParameter);
         if (bits < kMinBits || bits > kMaxBits)
-            throw drm::Error(std::string(kBitsParameter) + " must be between " + std::to_string(kMinBits) +
-                             " and " + std::to_string(kMaxBits) + ", not " + std::to_string(bits));
+            throw drm::Error(std::string(kBitsLabel) + " must be between " + std::to_string(kMinBits) + " and " +
+                             std::to_string(kMaxBits) + ", not " + std::to_string(bits));
         options.bits = bits;
     }
     if (parameters.hasParameter(kPredictorParameter)) {
         const int index = parameters.getEnum(kPredictorParameter);
         if (index < 0 || index >= kPredictorChoiceCount)
-            throw drm::Error(std::string(kPredictorParameter) + " must be 0 (auto), 1 (parallelogram) or 2 "
+            throw drm::Error(std::string(kPredictorLabel) + " must be 0 (auto), 1 (parallelogram) or 2 "
                              "(midpoint), not " + std::to_string(index));
         options.predictor = kPredictorChoices[index];
     }

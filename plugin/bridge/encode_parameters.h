@@ -15,6 +15,10 @@ namespace drm_meshlab {
 extern const char* const kBitsParameter;             // RichInt, 1..21
 extern const char* const kPredictorParameter;        // RichEnum: auto, parallelogram, midpoint
 extern const char* const kKeepVertexOrderParameter;  // RichBool
+// The labels the dialogs show; error messages name parameters by them.
+extern const char* const kBitsLabel;
+extern const char* const kPredictorLabel;
+extern const char* const kKeepVertexOrderLabel;
 
 // Adds the quantization bits and the predictor, with the codec's defaults.
 void addQuantizationAndPredictor(RichParameterList& parameters);
@@ -22,7 +26,8 @@ void addQuantizationAndPredictor(RichParameterList& parameters);
 void addKeepVertexOrder(RichParameterList& parameters);
 
 // The codec's default options with those of the parameters present in
-// `parameters` applied. Throws drm::Error naming the parameter when a value
+// `parameters` applied. Throws drm::Error naming the parameter by its label
+// ("Quantization bits must be between 1 and 21, not 0") when a value
 // is out of range, so a bad .mlx value is refused with a sentence, not by
 // an assertion deep in the codec.
 drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters);

@@ -1,5 +1,7 @@
 #include "bridge/encoding.h"
 
+#include "bridge/log_text.h"
+
 #include <cstdio>
 
 namespace drm_meshlab {
@@ -18,9 +20,7 @@ std::string statsSummary(const drm::Stats& stats) {
     const std::string repairs = drm::describeRepairs(stats);
     return std::to_string(stats.vertices) + " vertices, " + std::to_string(stats.faces) + " faces, " +
            std::to_string(stats.bits) + " bits, " + drm::predictorName(stats.predictor) +
-           " predictor: connectivity " + twoDecimals(stats.connectivityBitsPerVertex()) + " bpv, geometry " +
-           twoDecimals(stats.geometryBitsPerVertex()) + " bpv, total " +
-           twoDecimals(stats.totalBitsPerVertex()) + " bpv (" + std::to_string(stats.totalBytes) + " bytes)" +
+           " predictor: " + sizeBreakdown(stats) +
            (repairs.empty() ? "" : "; not a manifold oriented surface, so cut and restored exactly: " + repairs);
 }
 

@@ -8,11 +8,23 @@
 
 namespace drm_meshlab {
 
-// A drm::Progress that forwards to `cb` as a percentage (0..100) with the
-// codec's stage label, only when the percentage changes: the codec reports
-// often, and meshlabserver prints the label on every call. MeshLab's
+enum class ProgressStyle {
+    // The GUI: percentage (0..100) and the codec's stage label ("ranking")
+    // for the progress bar and status bar, only when the percentage changes
+    // (the codec reports often).
+    StatusBar,
+    // meshlabserver, which prints each label as it comes, without a
+    // separator, and drops a call whose percentage equals the last one: each
+    // new stage once, as a line of its own ("drm: ranking\n").
+    Lines,
+};
+
+// A drm::Progress that forwards to `cb` in the given style. MeshLab's
 // callback returning false cancels the codec (it then throws drm::Error).
 // Empty when `cb` is null (meshlabserver opens and saves without one).
+drm::Progress progressTo(vcg::CallBackPos* cb, ProgressStyle style);
+
+// The style of the program we run in (host.h).
 drm::Progress progressTo(vcg::CallBackPos* cb);
 
 }  // namespace drm_meshlab

@@ -2,6 +2,8 @@
 
 #include "bridge/encode_parameters.h"
 #include "bridge/encoding.h"
+#include "bridge/host.h"
+#include "bridge/log_text.h"
 #include "bridge/progress_bridge.h"
 #include "filter_drm/rank_colouring.h"
 
@@ -30,20 +32,7 @@ QString DrmFilterPlugin::filterName(FilterIDType filter) const {
 QString DrmFilterPlugin::filterInfo(FilterIDType filter) const {
     switch (filter) {
         case FP_RANK_COLOURS:
-            return "Compresses the mesh's connectivity with distance-ranked coding (the .drm format) and "
-                   "colours every face by the rank code that created it: "
-                   "<span style='color:#404040'>dark grey</span> for a component's start triangle, "
-                   "<span style='color:#8c9aae'>pale blue-grey</span> for rank 1 (the nearest candidate "
-                   "closed the triangle: almost free), <span style='color:#4caf50'>green</span> for 2, "
-                   "<span style='color:#f5a623'>orange</span> for 3 and <span style='color:#d62728'>red</span> "
-                   "for 4 and above. The rank is also stored as face quality. The log shows the connectivity "
-                   "cost in bits per vertex and the rank histogram. Any triangle mesh works: non-manifold "
-                   "parts are cut apart for the traversal (the log says what it cost). The mesh is not "
-                   "changed otherwise.<br>"
-                   "Same colours as the <tt>drm ranks</tt> command.<br><br>"
-                   "See: <br><i>P. Marais, J. Gain, D. Shreiner</i><br>"
-                   "<b>\"Distance-Ranked Connectivity Compression of Triangle Meshes\"</b><br>"
-                   "Computer Graphics Forum, 2007 (Figure 1).";
+            return QString::fromStdString(drm_meshlab::rankFilterHelpHtml());
     }
     return QString();
 }
@@ -84,6 +73,10 @@ bool DrmFilterPlugin::applyFilter(QAction* /*action*/, MeshDocument& md, const R
     MeshModel* m = md.mm();
     if (m == nullptr) return fail("Colorize Faces by Distance Rank: there is no current mesh");
     const std::string name = m->label().toStdString();
+    // The progress callback leaves the last stage in the status bar.
+    struct StatusBarReset {
+        ~StatusBarReset() { drm_meshlab::clearStatusBar(); }
+    } statusBarReset;
     try {
         drm::EncodeOptions options = drm_meshlab::encodeOptionsFrom(parameters);
         options.progress = drm_meshlab::progressTo(cb);
@@ -99,7 +92,15 @@ bool DrmFilterPlugin::applyFilter(QAction* /*action*/, MeshDocument& md, const R
             name.c_str(), drm_meshlab::twoDecimals(encoded.stats.connectivityBitsPerVertex()).c_str(),
             (unsigned long long)encoded.stats.connectivityBytes, (unsigned long long)encoded.stats.vertices,
             drm_meshlab::statsSummary(encoded.stats).c_str());
-        for (const std::string& line : drm_meshlab::rankReport(facesPerBucket, encoded.stats)) Log(line);
+        // The GUI's log pane takes HTML (and collapses spaces): a legend with
+        // colour swatches, the only one a user gets, since the 3D view has
+        // none. meshlabserver prints the log as it is: aligned plain text.
+        if (drm_meshlab::inMeshlabserver()) {
+            for (const std::string& line : drm_meshlab::rankLegendText(facesPerBucket)) Log(line);
+        } else {
+            Log(drm_meshlab::rankLegendHtml(facesPerBucket));
+        }
+        Log(drm_meshlab::rankHistogramText(encoded.stats));
         return true;
     } catch (const drm::Error& e) {
         return fail("Colorize Faces by Distance Rank: cannot rank " + name + ": " + e.what());

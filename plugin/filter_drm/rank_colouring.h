@@ -1,4 +1,4 @@
-// Painting faces of a MeshLab mesh by rank, and the log lines about it.
+// Painting faces of a MeshLab mesh by rank (the log lines about it: bridge/log_text.h).
 #ifndef DRM_MESHLAB_RANK_COLOURING_H
 #define DRM_MESHLAB_RANK_COLOURING_H
 
@@ -18,10 +18,6 @@ namespace drm_meshlab {
 // Per-face colour and quality must be enabled. Returns the number of faces
 // in each palette bucket. Throws drm::Error if the counts disagree.
 std::vector<uint64_t> colourFacesByRank(CMeshO& cm, const std::vector<uint32_t>& faceRank);
-
-// Log lines: faces per colour (as `drm ranks` prints them), then the rank
-// code histogram of the connectivity stream.
-std::vector<std::string> rankReport(const std::vector<uint64_t>& facesPerBucket, const drm::Stats& stats);
 
 }  // namespace drm_meshlab
 

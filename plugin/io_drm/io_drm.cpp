@@ -2,6 +2,7 @@
 
 #include "bridge/encode_parameters.h"
 #include "bridge/encoding.h"
+#include "bridge/host.h"
 #include "bridge/lost_attributes.h"
 #include "bridge/progress_bridge.h"
 
@@ -22,6 +23,12 @@ namespace {
 std::string localPath(const QString& fileName) { return QFile::encodeName(fileName).toStdString(); }
 
 std::string shownName(const QString& fileName) { return QFileInfo(fileName).fileName().toStdString(); }
+
+// Clears the status bar when an open or save ends, however it ends: the
+// progress callback leaves the codec's last stage there otherwise.
+struct StatusBarReset {
+    ~StatusBarReset() { drm_meshlab::clearStatusBar(); }
+};
 
 }  // namespace
 
@@ -55,9 +62,15 @@ bool DrmIOPlugin::fail(const std::string& message) {
     return false;
 }
 
+void DrmIOPlugin::report(const std::string& line) {
+    Log(GLLogStream::FILTER, line);
+    drm_meshlab::printToServerOutput(line);
+}
+
 bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshModel& m, int& mask,
                        const RichParameterList& /*parameters*/, vcg::CallBackPos* cb, QWidget* /*parent*/) {
     const std::string name = shownName(fileName);
+    const StatusBarReset statusBarReset;
     try {
         const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(localPath(fileName));
         const drm::Decoded decoded = drm::decode(bytes, drm_meshlab::progressTo(cb));
@@ -84,10 +97,10 @@ bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshM
         for (const std::string& note : drm_meshlab::openNotes(decoded.mesh, QFileInfo(fileName).absolutePath()))
         {
             const std::string line = "drm: note: " + name + ": " + note;
-            Log(GLLogStream::WARNING, line);
-            qInfo("%s", line.c_str());  // meshlabserver prints no log
+            Log(GLLogStream::FILTER, line);  // a note, not an error (WARNING is red)
+            qInfo("%s", line.c_str());       // meshlabserver prints no log
         }
-        Log(GLLogStream::FILTER, "drm: opened " + name + ": " + drm_meshlab::statsSummary(decoded.stats));
+        report("drm: opened " + name + ": " + drm_meshlab::statsSummary(decoded.stats));
         return true;
     } catch (const drm::Error& e) {
         m.cm.Clear();
@@ -104,6 +117,7 @@ bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshM
 bool DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshModel& m, const int mask,
                        const RichParameterList& parameters, vcg::CallBackPos* cb, QWidget* /*parent*/) {
     const std::string name = shownName(fileName);
+    const StatusBarReset statusBarReset;
     try {
         drm::EncodeOptions options = drm_meshlab::encodeOptionsFrom(parameters);
         options.progress = drm_meshlab::progressTo(cb);
@@ -111,17 +125,20 @@ bool DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshM
         const int kept = drm_meshlab::exportedAttributes(m, mask);
         drm::vcgio::attributesFromVcg(m.cm, kept, mesh);
         const drm::Encoded encoded = drm_meshlab::encodeMesh(mesh, options);
-        // Atomic: an existing file is replaced only by a complete new one.
+        // Atomic: an existing file is replaced only by a complete new one,
+        // with its mode and owner, through a symbolic link, and only if the
+        // user may write it (drm_vcg/file_io.h).
         drm::vcgio::writeFileAtomically(localPath(fileName), encoded.bytes);
 
         const std::vector<std::string> lost = drm_meshlab::lostAttributes(m, kept, mesh, encoded.stats);
         if (!lost.empty()) {
             const std::string note = "drm: note: " + name + " does not keep the mesh's " +
                                      drm_meshlab::joinedList(lost);
-            Log(GLLogStream::WARNING, note);
+            // A note, not an error: MeshLab's WARNING level is shown in red.
+            Log(GLLogStream::FILTER, note);
             qInfo("%s", note.c_str());
         }
-        Log(GLLogStream::FILTER, "drm: saved " + name + ": " + drm_meshlab::statsSummary(encoded.stats));
+        report("drm: saved " + name + ": " + drm_meshlab::statsSummary(encoded.stats));
         return true;
     } catch (const drm::Error& e) {
         return fail("cannot save " + name + ": " + e.what());

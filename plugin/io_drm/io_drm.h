@@ -35,6 +35,9 @@ private:
     // it on stderr: meshlabserver prints neither errorMessage after a failed
     // -i open or save, nor the log of an IO plugin it did not open with.
     bool fail(const std::string& message);
+    // Logs LINE (the GUI's log pane) and, in meshlabserver, which shows no
+    // IO plugin's log, prints it on stdout and into the -l log file.
+    void report(const std::string& line);
 };
 
 #endif  // DRM_MESHLAB_IO_DRM_H

@@ -64,6 +64,40 @@ expect_error() {
     ! ls ./*.tmp.* >/dev/null 2>&1 || fail "drm $* left a temporary file: $(ls ./*.tmp.*)"
 }
 
+# as_user COMMAND...: COMMAND as an ordinary user: nobody (through setpriv)
+# when we are root, who may write any file; need_user (below) first checks
+# that this can work.
+as_user() {
+    if [ "$(id -u)" -ne 0 ]; then
+        "$@"
+        return
+    fi
+    HOME="$work/home" TMPDIR="$work/home" XDG_RUNTIME_DIR="$work/home" \
+        setpriv --reuid=nobody --regid="$(id -gn nobody)" --clear-groups "$@"
+}
+
+# need_user: exits 77 (skip), saying why, where as_user cannot work: root
+# without setpriv or a user nobody, or nobody unable to reach $drm.
+need_user() {
+    [ "$(id -u)" -eq 0 ] || return 0
+    command -v setpriv >/dev/null || { echo "SKIPPED [$case_name]: root, and no setpriv to run as a non-root user" >&2; exit 77; }
+    id nobody >/dev/null 2>&1 || { echo "SKIPPED [$case_name]: root, and no user nobody to run as" >&2; exit 77; }
+    setpriv --reuid=nobody --regid="$(id -gn nobody)" --clear-groups test -x "$drm" || {
+        echo "SKIPPED [$case_name]: nobody cannot run $drm (a private folder on its path?)" >&2
+        exit 77
+    }
+}
+
+# user_run EXPECTED_CODE ARGS...: run, as as_user.
+user_run() {
+    local expected=$1
+    shift
+    as_user "$drm" "$@" >out.txt 2>err.txt
+    local code=$?
+    [ "$code" -lt 128 ] || fail "drm $* crashed (exit $code): $(cat err.txt)"
+    [ "$code" -eq "$expected" ] || fail "drm $* (as $(as_user id -un)) exited $code, expected $expected; stderr: $(cat err.txt)"
+}
+
 case "$case_name" in
 help_and_version)
     run 0 --version
@@ -224,6 +258,50 @@ existing_output_kept)
     printf 'not a drm file' >bad.drm
     expect_error 1 - decode bad.drm out.ply
     [ "$(cat out.ply)" = precious ] || fail "a failed decode changed the existing output"
+    ;;
+replace_files)
+    need_user
+    # Replacing files as an ordinary user: modes kept, links written
+    # through, read-only files refused and left alone (encode, decode, -o).
+    mkdir out
+    echo old >out/private.drm && chmod 600 out/private.drm
+    mkdir out/real && echo old >out/real/mesh.drm && chmod 640 out/real/mesh.drm && ln -s real/mesh.drm out/link.drm
+    echo old >out/locked.drm && chmod 444 out/locked.drm
+    echo old >out/locked.ply && chmod 444 out/locked.ply
+    mkdir out/many && echo old >out/many/torus.drm && chmod 444 out/many/torus.drm
+    [ "$(id -u)" -ne 0 ] || chown -R nobody:"$(id -gn nobody)" out
+    chmod 755 "$work"
+    "$drm" encode "$data/torus.ply" expected.drm >/dev/null 2>&1 || fail "drm encode failed"
+    user_run 0 encode "$data/torus.ply" out/private.drm
+    cmp -s out/private.drm expected.drm || fail "private.drm was not replaced"
+    [ "$(stat -c %a out/private.drm)" = 600 ] || fail "private.drm became mode $(stat -c %a out/private.drm)"
+    user_run 0 encode "$data/torus.ply" out/link.drm
+    [ -L out/link.drm ] || fail "the link was replaced by a file"
+    cmp -s out/real/mesh.drm expected.drm || fail "the link's target was not written"
+    [ "$(stat -c %a out/real/mesh.drm)" = 640 ] || fail "the target became mode $(stat -c %a out/real/mesh.drm)"
+    user_run 1 encode "$data/torus.ply" out/locked.drm
+    [ "$(wc -l <err.txt)" -eq 1 ] || fail "more than one error line: $(cat err.txt)"
+    grep -q "^drm: error: cannot write out/locked.drm: the file is read-only for you" err.txt || fail "unclear refusal: $(cat err.txt)"
+    [ "$(cat out/locked.drm)" = old ] || fail "the read-only locked.drm was replaced"
+    user_run 1 decode expected.drm out/locked.ply
+    grep -q "^drm: error: cannot write out/locked.ply: the file is read-only for you" err.txt || fail "unclear refusal: $(cat err.txt)"
+    [ "$(cat out/locked.ply)" = old ] || fail "the read-only locked.ply was replaced"
+    user_run 1 encode "$data/torus.ply" "$data/fandisk.ply" -o out/many -j 1
+    grep -q "cannot write out/many/torus.drm: the file is read-only for you" err.txt || fail "unclear refusal with -o: $(cat err.txt)"
+    [ -s out/many/fandisk.drm ] || fail "-o stopped at the read-only file"
+    [ "$(cat out/many/torus.drm)" = old ] || fail "the read-only many/torus.drm was replaced"
+    ! ls out/*.tmp.* out/*/*.tmp.* >/dev/null 2>&1 || fail "a temporary file was left"
+    echo "replace_files (as $(as_user id -un)): $(head -1 err.txt)"
+    ;;
+readme_palette)
+    # README.md's legend of the rank colours is the palette drm ranks uses.
+    readme="$data/../../README.md"
+    for bucket in "start triangle" "rank 1" "rank 2" "rank 3" "rank 4+"; do
+        hex=$(palette_colour "$bucket")
+        [ -n "$hex" ] || fail "drm ranks lists no colour for $bucket"
+        grep -q "#$hex" "$readme" || fail "README.md does not give $bucket's colour #$hex"
+    done
+    ! grep -qi "#8c9aae" "$readme" || fail "README.md names the old rank-1 colour"
     ;;
 render)
     # A closed mesh, grey: the requested size, no cracks between triangles

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 #include <cstdlib>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -20,33 +21,86 @@ namespace {
 
 std::string systemReason() { return std::strerror(errno); }
 
+std::string folderOf(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    if (slash == std::string::npos) return ".";
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+// The file a chain of symbolic links ends at (PATH itself if it is none),
+// which need not exist yet: a dangling link names the file to create.
+std::string linkTarget(const std::string& path) {
+    std::string current = path;
+    for (int hops = 0; hops < 40; ++hops) {
+        struct stat info;
+        if (::lstat(current.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return current;
+        std::vector<char> buffer(size_t(info.st_size > 0 ? info.st_size : 255) + 1);
+        const ssize_t n = ::readlink(current.c_str(), buffer.data(), buffer.size());
+        if (n < 0) throw Error("cannot write " + path + ": " + systemReason());
+        if (size_t(n) >= buffer.size()) throw Error("cannot write " + path + ": the link changed while read");
+        const std::string to(buffer.data(), size_t(n));
+        current = (!to.empty() && to[0] == '/') ? to : folderOf(current) + "/" + to;
+    }
+    throw Error("cannot write " + path + ": too many levels of symbolic links");
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    // A symbolic link is written through: its target gets the new content
+    // and the link stays a link (as an editor saving through it would).
+    const std::string target = linkTarget(path);
+    const std::string shown = target == path ? path : path + " (a link to " + target + ")";
     struct stat existing;
-    if (::stat(path.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode))
-        throw Error("cannot write " + path + ": it is a directory");
+    const bool replacing = ::stat(target.c_str(), &existing) == 0;
+    if (replacing) {
+        if (S_ISDIR(existing.st_mode)) throw Error("cannot write " + shown + ": it is a directory");
+        if (!S_ISREG(existing.st_mode)) throw Error("cannot write " + shown + ": not a regular file");
+        // The folder may let us rename over a file we may not write (mode
+        // 444): refuse, as MeshLab's own exporters and most editors do.
+        if (::access(target.c_str(), W_OK) != 0)
+            throw Error("cannot write " + shown + ": " +
+                        (errno == EACCES || errno == EPERM || errno == EROFS
+                             ? std::string("the file is read-only for you (") + systemReason() + ")"
+                             : systemReason()));
+    }
 
     // The content is produced first, so a failing writer touches no file.
     std::ostringstream content(std::ios::binary);
     write(content);
-    if (!content) throw Error("cannot write " + path + ": the output could not be produced");
+    if (!content) throw Error("cannot write " + shown + ": the output could not be produced");
     const std::string bytes = content.str();
 
     // mkstemp creates a new file with a random name, exclusively: it never
     // follows a symlink or reuses a file someone else put there, and only
     // the file it created is ever removed.
-    std::string temporary = path + ".tmp.XXXXXX";
+    std::string temporary = target + ".tmp.XXXXXX";
     const int fd = ::mkstemp(&temporary[0]);
-    if (fd < 0) throw Error("cannot write " + path + ": " + systemReason());
+    if (fd < 0) throw Error("cannot write " + shown + ": " + systemReason());
     auto fail = [&](const std::string& reason) {
         ::close(fd);
         ::unlink(temporary.c_str());
-        throw Error("cannot write " + path + ": " + reason);
+        throw Error("cannot write " + shown + ": " + reason);
     };
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    if (::fchmod(fd, 0666 & ~mask) != 0) fail(systemReason());  // mkstemp's 0600 is too private for a mesh
+    if (replacing) {
+        // The new file takes the old one's owner (only root may give a file
+        // away; a user may keep its group if they belong to it) and mode, so
+        // a private file stays private. Set-id bits are kept only when the
+        // owner is, and chmod comes after chown, which clears them.
+        bool sameOwner = ::fchown(fd, existing.st_uid, existing.st_gid) == 0;
+        if (!sameOwner) {
+            struct stat created;
+            if (::fchown(fd, uid_t(-1), existing.st_gid) != 0) { /* the group stays ours */ }
+            sameOwner = ::fstat(fd, &created) == 0 && created.st_uid == existing.st_uid &&
+                        created.st_gid == existing.st_gid;
+        }
+        const mode_t mode = existing.st_mode & (sameOwner ? mode_t(07777) : mode_t(01777));
+        if (::fchmod(fd, mode) != 0) fail(systemReason());
+    } else {
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+        if (::fchmod(fd, 0666 & ~mask) != 0) fail(systemReason());  // mkstemp's 0600 is too private for a mesh
+    }
     for (size_t done = 0; done < bytes.size();) {
         const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
         if (n < 0 && errno == EINTR) continue;
@@ -56,12 +110,21 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     if (::fsync(fd) != 0) fail(systemReason());
     if (::close(fd) != 0) {
         ::unlink(temporary.c_str());
-        throw Error("cannot write " + path + ": " + systemReason());
+        throw Error("cannot write " + shown + ": " + systemReason());
     }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    if (std::rename(temporary.c_str(), target.c_str()) != 0) {
         const std::string reason = systemReason();
         ::unlink(temporary.c_str());
-        throw Error("cannot write " + path + ": " + reason);
+        throw Error("cannot write " + shown + ": " + reason);
+    }
+    // The rename lives in the folder: sync it too, or a crash soon after
+    // can bring back the old file (or none). The new file is in place by
+    // now, so only a real I/O error is reported.
+    const int folder = ::open(folderOf(target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (folder >= 0) {
+        const bool failed = ::fsync(folder) != 0 && errno == EIO;
+        ::close(folder);
+        if (failed) throw Error("cannot write " + shown + ": the folder could not be synced (I/O error)");
     }
 }
 

@@ -2,10 +2,15 @@
 //
 // Output is produced in memory, then written to a new file `PATH.tmp.XXXXXX`
 // created exclusively with a random name in the same folder (same file
-// system, so the final rename is atomic), synced, and renamed over PATH.
-// Only that file is ever removed on failure: a failed write never leaves a
-// partial file, never follows a planted symlink, and never touches an
-// existing file.
+// system, so the final rename is atomic), synced, renamed over PATH, and the
+// folder synced. Only that file is ever removed on failure: a failed write
+// never leaves a partial file, never follows a planted symlink, and never
+// touches an existing file.
+// Replacing a file keeps what the user set on it: its mode (a 600 file stays
+// 600) and its owner and group where the system allows it (only root may
+// give a file away). A symbolic link PATH is written through: its target is
+// replaced and the link stays. A file the user may not write (mode 444, say)
+// is refused, even in a folder they may write, as MeshLab's own exporters do.
 // Shared by savePly and the `drm` tool's .drm output. C++14-clean.
 #ifndef DRM_VCG_FILE_IO_H
 #define DRM_VCG_FILE_IO_H
@@ -20,8 +25,8 @@
 namespace drm {
 namespace vcgio {
 
-// Calls write(stream) on a temporary file next to `path`, then renames it to
-// `path`. Throws drm::Error("cannot write PATH: reason") on failure, and
+// Calls write(stream) on a temporary file next to `path` (next to the link's
+// target if `path` is a symbolic link), then renames it over that file. Throws drm::Error("cannot write PATH: reason") on failure, and
 // passes on what `write` throws; either way the temporary file is removed.
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 

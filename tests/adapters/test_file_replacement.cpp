@@ -1,0 +1,167 @@
+// Replacing an existing file: what the user set on it survives (mode, owner
+// where permitted), symbolic links are written through, files the user may
+// not write are refused, and a refused or failed write changes nothing.
+//
+// Root may write any file, so the refusal is only observable as another
+// user: ctest runs this binary a second time as `nobody` (adapter_tests.
+// as_user, tests/adapters/run_as_user.sh), and the tests that need a
+// non-root user skip themselves, saying so, when run as root.
+#include <drm/drm.h>
+#include <drm_vcg/file_io.h>
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "scratch_dir.h"
+
+namespace {
+
+mode_t modeOf(const std::string& path) {
+    struct stat info;
+    EXPECT_EQ(::stat(path.c_str(), &info), 0) << path;
+    return info.st_mode & 07777;
+}
+
+bool isLink(const std::string& path) {
+    struct stat info;
+    return ::lstat(path.c_str(), &info) == 0 && S_ISLNK(info.st_mode);
+}
+
+const std::vector<uint8_t> kNewBytes{'n', 'e', 'w'};
+
+}  // namespace
+
+TEST(FileReplacement, KeepsAPrivateFilePrivate) {
+    ScratchDir dir;
+    const std::string path = dir.file("private.drm");
+    writeText(path, "old");
+    ASSERT_EQ(::chmod(path.c_str(), 0600), 0);
+    drm::vcgio::writeFileAtomically(path, kNewBytes);
+    EXPECT_EQ(readText(path), "new");
+    EXPECT_EQ(modeOf(path), mode_t(0600));
+}
+
+TEST(FileReplacement, KeepsAnUnusualMode) {
+    ScratchDir dir;
+    const std::string path = dir.file("shared.drm");
+    writeText(path, "old");
+    ASSERT_EQ(::chmod(path.c_str(), 0640), 0);
+    drm::vcgio::writeFileAtomically(path, kNewBytes);
+    EXPECT_EQ(modeOf(path), mode_t(0640));
+}
+
+TEST(FileReplacement, NewFileFollowsTheUmask) {
+    ScratchDir dir;
+    const mode_t old = ::umask(027);
+    drm::vcgio::writeFileAtomically(dir.file("fresh.drm"), kNewBytes);
+    ::umask(old);
+    EXPECT_EQ(modeOf(dir.file("fresh.drm")), mode_t(0640));
+}
+
+TEST(FileReplacement, KeepsOwnerAndGroup) {
+    ScratchDir dir;
+    const std::string path = dir.file("owned.drm");
+    writeText(path, "old");
+    struct stat before;
+    ASSERT_EQ(::stat(path.c_str(), &before), 0);
+    if (::geteuid() == 0) {
+        // Root may give a file away: hand it to nobody, and it must stay theirs.
+        ASSERT_EQ(::chown(path.c_str(), 65534, 65534), 0);
+        ASSERT_EQ(::stat(path.c_str(), &before), 0);
+    }
+    drm::vcgio::writeFileAtomically(path, kNewBytes);
+    struct stat after;
+    ASSERT_EQ(::stat(path.c_str(), &after), 0);
+    EXPECT_EQ(after.st_uid, before.st_uid);
+    EXPECT_EQ(after.st_gid, before.st_gid);
+}
+
+TEST(FileReplacement, WritesThroughASymbolicLink) {
+    ScratchDir dir;
+    ASSERT_EQ(::mkdir(dir.file("real").c_str(), 0755), 0);
+    const std::string target = dir.file("real/mesh.drm");
+    writeText(target, "old");
+    ASSERT_EQ(::chmod(target.c_str(), 0600), 0);
+    ASSERT_EQ(::symlink("real/mesh.drm", dir.file("link.drm").c_str()), 0);
+    drm::vcgio::writeFileAtomically(dir.file("link.drm"), kNewBytes);
+    EXPECT_TRUE(isLink(dir.file("link.drm"))) << "the link was replaced by a file";
+    EXPECT_EQ(readText(target), "new");
+    EXPECT_EQ(modeOf(target), mode_t(0600));
+    EXPECT_EQ(dir.entries().size(), 2u) << "a temporary file was left behind";
+}
+
+TEST(FileReplacement, WritesThroughAChainOfLinksAndCreatesADanglingLinksTarget) {
+    ScratchDir dir;
+    ASSERT_EQ(::symlink("b.drm", dir.file("a.drm").c_str()), 0);
+    ASSERT_EQ(::symlink(dir.file("c.drm").c_str(), dir.file("b.drm").c_str()), 0);
+    drm::vcgio::writeFileAtomically(dir.file("a.drm"), kNewBytes);
+    EXPECT_TRUE(isLink(dir.file("a.drm")));
+    EXPECT_TRUE(isLink(dir.file("b.drm")));
+    EXPECT_EQ(readText(dir.file("c.drm")), "new");
+}
+
+TEST(FileReplacement, RefusesALinkLoop) {
+    ScratchDir dir;
+    ASSERT_EQ(::symlink("b.drm", dir.file("a.drm").c_str()), 0);
+    ASSERT_EQ(::symlink("a.drm", dir.file("b.drm").c_str()), 0);
+    EXPECT_THROW(drm::vcgio::writeFileAtomically(dir.file("a.drm"), kNewBytes), drm::Error);
+    EXPECT_EQ(dir.entries().size(), 2u);
+}
+
+TEST(FileReplacement, RefusesAReadOnlyFileInAWritableFolder) {
+    if (::geteuid() == 0)
+        GTEST_SKIP() << "root may write any file; adapter_tests.as_user runs this as nobody";
+    ScratchDir dir;
+    const std::string path = dir.file("locked.drm");
+    writeText(path, "old");
+    ASSERT_EQ(::chmod(path.c_str(), 0444), 0);
+    try {
+        drm::vcgio::writeFileAtomically(path, kNewBytes);
+        FAIL() << "a read-only file was replaced";
+    } catch (const drm::Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("cannot write " + path + ": the file is read-only for you"), std::string::npos)
+            << message;
+    }
+    EXPECT_EQ(readText(path), "old");
+    EXPECT_EQ(modeOf(path), mode_t(0444));
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"locked.drm"});
+}
+
+TEST(FileReplacement, RefusesAReadOnlyFileBehindALink) {
+    if (::geteuid() == 0)
+        GTEST_SKIP() << "root may write any file; adapter_tests.as_user runs this as nobody";
+    ScratchDir dir;
+    writeText(dir.file("locked.drm"), "old");
+    ASSERT_EQ(::chmod(dir.file("locked.drm").c_str(), 0444), 0);
+    ASSERT_EQ(::symlink("locked.drm", dir.file("link.drm").c_str()), 0);
+    EXPECT_THROW(drm::vcgio::writeFileAtomically(dir.file("link.drm"), kNewBytes), drm::Error);
+    EXPECT_EQ(readText(dir.file("locked.drm")), "old");
+    EXPECT_TRUE(isLink(dir.file("link.drm")));
+}
+
+TEST(FileReplacement, AFailedWriteLeavesAPrivateFileAsItWas) {
+    ScratchDir dir;
+    const std::string path = dir.file("keep.drm");
+    writeText(path, "old");
+    ASSERT_EQ(::chmod(path.c_str(), 0600), 0);
+    EXPECT_THROW(drm::vcgio::writeFileAtomically(path, [](std::ostream&) { throw drm::Error("no output"); }),
+                 drm::Error);
+    EXPECT_EQ(readText(path), "old");
+    EXPECT_EQ(modeOf(path), mode_t(0600));
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"keep.drm"});
+}
+
+TEST(FileReplacement, ReportsAFolderTheUserMayNotWrite) {
+    if (::geteuid() == 0)
+        GTEST_SKIP() << "root may write any folder; adapter_tests.as_user runs this as nobody";
+    ScratchDir dir;
+    ASSERT_EQ(::mkdir(dir.file("closed").c_str(), 0755), 0);
+    writeText(dir.file("closed/mesh.drm"), "old");
+    ASSERT_EQ(::chmod(dir.file("closed").c_str(), 0555), 0);
+    EXPECT_THROW(drm::vcgio::writeFileAtomically(dir.file("closed/mesh.drm"), kNewBytes), drm::Error);
+    EXPECT_EQ(readText(dir.file("closed/mesh.drm")), "old");
+    ASSERT_EQ(::chmod(dir.file("closed").c_str(), 0755), 0);  // so ScratchDir can remove it
+}
