@@ -10,6 +10,8 @@ const char* const kKeepVertexOrderParameter = "KeepVertexOrder";
 const char* const kBitsLabel = "Quantization bits";
 const char* const kPredictorLabel = "Apex predictor";
 const char* const kKeepVertexOrderLabel = "Keep vertex order";
+const char* const kVerifyParameter = "VerifyAfterWriting";
+const char* const kVerifyLabel = "Verify";
 
 namespace {
 
@@ -52,6 +54,11 @@ void addKeepVertexOrder(RichParameterList& parameters) {
                                  "the save log says how much."));
 }
 
+void addVerify(RichParameterList& parameters) {
+    parameters.addParam(RichBool(kVerifyParameter, drm::EncodeOptions().verify, kVerifyLabel,
+                                 "Decode and compare before writing. Costs about half the save time again."));
+}
+
 drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters) {
     drm::EncodeOptions options;
     if (parameters.hasParameter(kBitsParameter)) {
@@ -70,6 +77,7 @@ drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters) {
     }
     if (parameters.hasParameter(kKeepVertexOrderParameter))
         options.keepVertexOrder = parameters.getBool(kKeepVertexOrderParameter);
+    if (parameters.hasParameter(kVerifyParameter)) options.verify = parameters.getBool(kVerifyParameter);
     return options;
 }
 

@@ -15,15 +15,20 @@ namespace drm_meshlab {
 extern const char* const kBitsParameter;             // RichInt, 1..21
 extern const char* const kPredictorParameter;        // RichEnum: auto, parallelogram, midpoint
 extern const char* const kKeepVertexOrderParameter;  // RichBool
+extern const char* const kVerifyParameter;           // RichBool: EncodeOptions::verify
 // The labels the dialogs show; error messages name parameters by them.
 extern const char* const kBitsLabel;
 extern const char* const kPredictorLabel;
 extern const char* const kKeepVertexOrderLabel;
+extern const char* const kVerifyLabel;
 
 // Adds the quantization bits and the predictor, with the codec's defaults.
 void addQuantizationAndPredictor(RichParameterList& parameters);
 // Adds "keep vertex order" (off by default, as in `drm encode`).
 void addKeepVertexOrder(RichParameterList& parameters);
+// Adds "verify" (off by default, as in `drm encode`): decode what was
+// written and compare it with the mesh before replacing the file.
+void addVerify(RichParameterList& parameters);
 
 // The codec's default options with those of the parameters present in
 // `parameters` applied. Throws drm::Error naming the parameter by its label

@@ -53,6 +53,7 @@ void DrmIOPlugin::GetExportMaskCapability(QString& /*format*/, int& capability, 
 void DrmIOPlugin::initSaveParameter(const QString& /*format*/, MeshModel& /*m*/, RichParameterList& parameters) {
     drm_meshlab::addQuantizationAndPredictor(parameters);
     drm_meshlab::addKeepVertexOrder(parameters);
+    drm_meshlab::addVerify(parameters);
 }
 
 bool DrmIOPlugin::fail(const std::string& message) {

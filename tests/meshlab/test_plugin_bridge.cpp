@@ -180,10 +180,19 @@ TEST(Host, ClearStatusBarEmptiesTheMainWindowsStatusBar) {
     EXPECT_FALSE(drm_meshlab::inMeshlabserver());
 }
 
+TEST(ExportDialog, VerifyIsOffByDefaultAndReachesTheEncoder) {
+    RichParameterList parameters;
+    drm_meshlab::addVerify(parameters);
+    EXPECT_FALSE(drm_meshlab::encodeOptionsFrom(parameters).verify);
+    parameters.setValue(drm_meshlab::kVerifyParameter, BoolValue(true));
+    EXPECT_TRUE(drm_meshlab::encodeOptionsFrom(parameters).verify);
+}
+
 TEST(ExportDialog, HelpIsShortAndErrorsUseTheLabels) {
     RichParameterList parameters;
     drm_meshlab::addQuantizationAndPredictor(parameters);
     drm_meshlab::addKeepVertexOrder(parameters);
+    drm_meshlab::addVerify(parameters);
     for (const RichParameter& p : parameters) {
         // The save dialog shows the help in a column about 45 characters
         // wide and cuts it after two lines.
