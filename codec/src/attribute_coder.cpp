@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include "bit_model.h"
@@ -112,8 +113,13 @@ std::vector<AttributePredictor> predictorsFor(const AttributeValues& a) {
     if (a.layout == AttributeLayout::Face) return {AttributePredictor::AdjacentFace, AttributePredictor::Previous};
     std::vector<AttributePredictor> p = {AttributePredictor::Parallelogram, AttributePredictor::RingAverage,
                                          AttributePredictor::Previous};
-    if (a.semantic == AttributeSemantic::Normal) p.insert(p.begin(), AttributePredictor::GeometricNormal);
-    if (a.semantic == AttributeSemantic::TexCoord) p.insert(p.begin(), AttributePredictor::GeometricUv);
+    if (a.semantic == AttributeSemantic::Normal) {
+        p.insert(p.begin(), AttributePredictor::GeometricNormal);
+        if (a.layout != AttributeLayout::Vertex) p.push_back(AttributePredictor::FaceOrGeometricNormal);
+    }
+    if (a.semantic == AttributeSemantic::TexCoord) {
+        p.insert(p.begin(), AttributePredictor::GeometricUv);
+    }
     return p;
 }
 
@@ -189,6 +195,18 @@ struct WedgeWalk {
         return true;
     }
 
+    // The value of a decoded corner in the face of the wedge's first corner.
+    bool sameFace(uint32_t w, uint32_t* p) const {
+        const uint32_t c = wedgeCorners[wedgeStart[w]];
+        for (uint32_t n : {previousCorner(c), nextCorner(c)}) {
+            const uint32_t x = wedgeOf[n];
+            if (x >= w) continue;
+            for (size_t j = 0; j < D(); ++j) p[j] = values[x * D() + j];
+            return true;
+        }
+        return false;
+    }
+
     double coordinate(uint32_t corner, int k) const {
         return double(mesh.grid[3 * size_t(mesh.triangles[corner]) + size_t(k)]);
     }
@@ -211,7 +229,16 @@ struct WedgeWalk {
         return true;
     }
 
-    bool geometricUv(uint32_t w, uint32_t* p) const {
+    // p: the prediction on the side the orientation count expects; other
+    // (if not null): the one mirrored across A-B, and *sided whether the
+    // two differ (the coder then says which holds, per wedge).
+    bool geometricUv(uint32_t w, uint32_t* p, uint32_t* other = nullptr, bool* sided = nullptr) const {
+        // The mean over every corner of the wedge whose two neighbours in
+        // its face are decoded (each one triangle's shape carried into
+        // texture space), on the side the orientation count expects; other:
+        // the mean mirrored across each edge.
+        double sum[2] = {0, 0}, mirroredSum[2] = {0, 0};
+        int count = 0;
         for (uint32_t i = wedgeStart[w]; i < wedgeStart[w + 1]; ++i) {
             const uint32_t c = wedgeCorners[i], a = nextCorner(c), b = previousCorner(c);
             const uint32_t wa = wedgeOf[a], wb = wedgeOf[b];
@@ -224,10 +251,13 @@ struct WedgeWalk {
                 fe += f[k] * e[k];
             }
             const double ua = values[wa * 2], va = values[wa * 2 + 1];
+            ++count;
             if (ee == 0) {
-                p[0] = uint32_t(ua);
-                p[1] = uint32_t(va);
-                return true;
+                sum[0] += ua;
+                sum[1] += va;
+                mirroredSum[0] += ua;
+                mirroredSum[1] += va;
+                continue;
             }
             const double s = fe / ee;
             double h = 0;
@@ -238,13 +268,20 @@ struct WedgeWalk {
             const double t = std::sqrt(h / ee);
             const double du = double(values[wb * 2]) - ua, dv = double(values[wb * 2 + 1]) - va;
             const double sign = orientation >= 0 ? 1.0 : -1.0;
-            const double u = ua + s * du - sign * t * dv, v = va + s * dv + sign * t * du;
-            const double hi = double(top());
-            p[0] = uint32_t(std::min(std::max(std::floor(u + 0.5), 0.0), hi));
-            p[1] = uint32_t(std::min(std::max(std::floor(v + 0.5), 0.0), hi));
-            return true;
+            sum[0] += ua + s * du - sign * t * dv;
+            sum[1] += va + s * dv + sign * t * du;
+            mirroredSum[0] += ua + s * du + sign * t * dv;
+            mirroredSum[1] += va + s * dv - sign * t * du;
         }
-        return false;
+        if (count == 0) return false;
+        const double hi = double(top());
+        for (int k = 0; k < 2; ++k) p[k] = uint32_t(std::min(std::max(std::floor(sum[k] / count + 0.5), 0.0), hi));
+        if (other) {
+            for (int k = 0; k < 2; ++k)
+                other[k] = uint32_t(std::min(std::max(std::floor(mirroredSum[k] / count + 0.5), 0.0), hi));
+            *sided = other[0] != p[0] || other[1] != p[1];
+        }
+        return true;
     }
 
     // After wedge w's value is known: which way its texture triangle turns.
@@ -267,12 +304,14 @@ struct WedgeWalk {
         bool made = false;
         switch (predictor) {
             case AttributePredictor::GeometricNormal: made = geometricNormal(w, p); break;
+            case AttributePredictor::FaceOrGeometricNormal: made = sameFace(w, p) || geometricNormal(w, p); break;
             case AttributePredictor::GeometricUv: made = geometricUv(w, p); break;
             case AttributePredictor::Parallelogram: made = parallelogram(w, p); break;
             case AttributePredictor::RingAverage: made = ringAverage(w, p); break;
             default: break;
         }
-        if (!made && predictor != AttributePredictor::Previous && predictor != AttributePredictor::GeometricNormal)
+        if (!made && predictor != AttributePredictor::Previous && predictor != AttributePredictor::GeometricNormal &&
+            predictor != AttributePredictor::FaceOrGeometricNormal)
             made = ringAverage(w, p);
         if (!made) previous(w, p);
     }
@@ -328,8 +367,8 @@ void codeSeams(Io& io, std::vector<uint8_t>& seam) {
 template <class Io>
 void codeWedges(Io& io, WedgeWalk& walk, bool zeroFlags) {
     ResidualCoder residuals(walk.shape.components, walk.shape.bits);
-    BitModel zeroModel[2];
-    int previousZero = 0;
+    BitModel zeroModel[2], sideModel[2];
+    int previousZero = 0, previousFlip = 0;
     const size_t D = walk.D();
     const uint32_t wedges = walk.cornerWedges + uint32_t(walk.isolated.size());
     uint32_t p[kMaxComponents];
@@ -342,7 +381,29 @@ void codeWedges(Io& io, WedgeWalk& walk, bool zeroFlags) {
                 continue;
             }
         }
-        walk.predict(w, p);
+        bool sided = false;
+        uint32_t mirrored[kMaxComponents];
+        if (walk.predictor == AttributePredictor::GeometricUv && w < walk.cornerWedges &&
+            walk.geometricUv(w, p, mirrored, &sided)) {
+            if (sided) {
+                // Which side of the edge the texture triangle lies on: UV
+                // islands may be mirrored, so the coder says it per wedge
+                // (cheap while the orientation count is right).
+                int flip = 0;
+                if (Io::kEncoding) {
+                    const uint32_t* v = &walk.values[w * D];
+                    auto distance = [&](const uint32_t* q) {
+                        return std::llabs(int64_t(v[0]) - int64_t(q[0])) + std::llabs(int64_t(v[1]) - int64_t(q[1]));
+                    };
+                    flip = distance(mirrored) < distance(p) ? 1 : 0;
+                }
+                flip = io.bit(sideModel[previousFlip], flip);
+                previousFlip = flip;
+                if (flip) std::copy(mirrored, mirrored + 2, p);
+            }
+        } else {
+            walk.predict(w, p);
+        }
         residuals.code(io, p, &walk.values[w * D]);
         if (walk.predictor == AttributePredictor::GeometricUv && w < walk.cornerWedges) walk.learnOrientation(w);
     }

@@ -44,6 +44,8 @@ enum class AttributePredictor : uint8_t {
     GeometricNormal = 3,  // the area-weighted normal of the wedge's faces (normals)
     GeometricUv = 4,      // the triangle's shape carried into texture space (texture coordinates)
     AdjacentFace = 5,     // the value of the first earlier face across an edge (per-face layout)
+    FaceOrGeometricNormal = 6,  // a decoded corner of the same face, else the geometric normal
+                                // (flat-shaded meshes: every face's corners share its normal)
 };
 
 // The values of one attribute and how they are quantized.

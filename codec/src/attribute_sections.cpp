@@ -10,6 +10,8 @@
 #include "container.h"
 #include "corner_table.h"
 #include "octahedral.h"
+#include "range_coder.h"
+#include "rank_coder.h"
 
 namespace drm {
 namespace {
@@ -165,26 +167,88 @@ const char* sectionName(AttributeSemantic s, AttributeLayout l) {
     return "attribute";
 }
 
+// Names and metadata (an .mtl file's text, texture paths) as bytes in an
+// order-1 model: one adaptive table per class of the previous byte.
+int byteClass(uint8_t b) {
+    if (b == ' ' || b == '\t') return 0;
+    if (b == '\n' || b == '\r') return 1;
+    if (b >= '0' && b <= '9') return 2;
+    if (b >= 'a' && b <= 'z') return 3;
+    if (b >= 'A' && b <= 'Z') return 4;
+    if (b == '.' || b == '_' || b == '/' || b == '\\' || b == '-') return 5;
+    return 6;
+}
+constexpr int kByteClasses = 7;
+constexpr uint8_t kTextRaw = 0, kTextCoded = 1;
+constexpr size_t kMaxTextRatio = 32;  // decoded text per coded byte, at most (plus kTextSlack)
+constexpr size_t kTextSlack = 4096;
+
+std::vector<uint8_t> codeText(const std::string& text) {
+    std::vector<AdaptiveFrequencies> tables(kByteClasses, AdaptiveFrequencies(std::vector<uint16_t>(256, 1)));
+    RangeEncoder coder;
+    int context = 1;
+    for (char ch : text) {
+        const uint8_t b = uint8_t(ch);
+        tables[size_t(context)].encode(coder, b);
+        context = byteClass(b);
+    }
+    return coder.finish();
+}
+
+std::string decodeText(const uint8_t* data, size_t size, size_t length) {
+    std::vector<AdaptiveFrequencies> tables(kByteClasses, AdaptiveFrequencies(std::vector<uint16_t>(256, 1)));
+    RangeDecoder coder(data, size);
+    std::string text(length, '\0');
+    int context = 1;
+    for (size_t i = 0; i < length; ++i) {
+        const uint8_t b = uint8_t(tables[size_t(context)].decode(coder));
+        text[i] = char(b);
+        context = byteClass(b);
+    }
+    if (coder.bytesPastEnd() > 0) throw Error("corrupt file: a name section ends before its last byte");
+    return text;
+}
+
 std::vector<uint8_t> stringsSection(uint8_t kind, const std::vector<std::string>& strings) {
     ByteWriter out;
     out.u8(kind);
     out.varint(strings.size());
+    std::string text;
     for (const std::string& s : strings) {
         out.varint(s.size());
-        out.bytes(reinterpret_cast<const uint8_t*>(s.data()), s.size());
+        text += s;
     }
+    const std::vector<uint8_t> coded = codeText(text);
+    const bool useCoded = coded.size() < text.size() && text.size() <= kMaxTextRatio * coded.size() + kTextSlack;
+    out.u8(useCoded ? kTextCoded : kTextRaw);
+    if (useCoded) out.bytes(coded);
+    else out.bytes(reinterpret_cast<const uint8_t*>(text.data()), text.size());
     return std::move(out.buffer());
 }
 
-std::vector<std::string> readStrings(ByteReader& in) {
+std::vector<std::string> readStrings(ByteReader& in, const uint8_t* data) {
     const uint64_t count = in.count("string count", in.remaining());
-    std::vector<std::string> strings;
-    for (uint64_t i = 0; i < count; ++i) {
-        const size_t n = size_t(in.count("string length", in.remaining()));
-        const uint8_t* bytes = in.bytes(n, "string");
-        strings.emplace_back(reinterpret_cast<const char*>(bytes), n);
+    std::vector<size_t> lengths(count);
+    uint64_t total = 0;
+    for (size_t& n : lengths) {
+        n = size_t(in.count("string length", kMaxTextRatio * in.remaining() + kTextSlack));
+        total += n;
     }
-    if (in.remaining() != 0) throw Error("corrupt file: unexpected bytes after the strings of a name section");
+    const uint8_t mode = in.u8("text coding");
+    if (mode != kTextRaw && mode != kTextCoded) throw Error("corrupt file: unknown text coding " + std::to_string(mode));
+    const size_t payload = in.remaining();
+    if (mode == kTextRaw ? total != payload : total > kMaxTextRatio * payload + kTextSlack)
+        throw Error("corrupt file: a name section's lengths do not fit its bytes");
+    const uint8_t* bytes = in.bytes(payload, "text");
+    (void)data;
+    const std::string text = mode == kTextRaw ? std::string(reinterpret_cast<const char*>(bytes), payload)
+                                              : decodeText(bytes, payload, size_t(total));
+    std::vector<std::string> strings;
+    size_t at = 0;
+    for (size_t n : lengths) {
+        strings.push_back(text.substr(at, n));
+        at += n;
+    }
     return strings;
 }
 
@@ -371,10 +435,10 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
         if (kind >= kMaterialNames) {
             ByteReader in(p.data, p.size, "name section");
             in.u8("kind");
-            if (kind == kMaterialNames) m.materials = readStrings(in);
-            else if (kind == kTextureNames) m.textures = readStrings(in);
+            if (kind == kMaterialNames) m.materials = readStrings(in, p.data);
+            else if (kind == kTextureNames) m.textures = readStrings(in, p.data);
             else if (kind == kMetadata) {
-                const std::vector<std::string> pairs = readStrings(in);
+                const std::vector<std::string> pairs = readStrings(in, p.data);
                 if (pairs.size() % 2) throw Error("corrupt file: the metadata section holds an odd number of strings");
                 for (size_t i = 0; i < pairs.size(); i += 2) m.metadata.emplace_back(pairs[i], pairs[i + 1]);
             } else {
