@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Usage: scripts/make-screenshot.sh [rank-colours] [export-dialog] [rank-legend]
+# Usage: scripts/make-screenshot.sh [rank-colours] [export-dialog] [rank-legend] [duck-textured]
 #
 # Regenerates the MeshLab pictures in docs/images (all three by default):
 #   meshlab-rank-colours.png   fandisk (the paper's Figure 1(b)) with faces
@@ -11,7 +11,12 @@
 #   meshlab-rank-legend.png    the filter run from Filters > Color Creation
 #                              and Processing > Colorize Faces by Distance
 #                              Rank: the coloured mesh and the legend in the
-#                              log pane.
+#                              log pane;
+#   meshlab-duck-textured.png  ../shared/meshes-attributes/duck.obj encoded by
+#                              `drm encode` (texture coordinates with seams,
+#                              normals, its material and texture name), then
+#                              opened from duck.drm in the GUI with
+#                              duckCM.tga beside it: textured as it was.
 # Real MeshLab 2020.09 (the GUI, under Xvfb, 1280x900, no window manager),
 # driven with xdotool: the clicks are at the places MeshLab 2020.09 puts its
 # menus and dialogs on that screen. Needs a build (build/plugins, or
@@ -42,6 +47,14 @@ if [ "${1:-}" = "--inside-xvfb" ]; then
     xdotool mousemove 1100 250
     sleep 4
     import -window root "$out"
+    ;;
+  duck-textured)
+    # A three-quarter view of the duck, then move the pointer away.
+    xdotool mousemove 600 450 mousedown 1 mousemove 560 430 sleep 0.2 mousemove 520 420 mouseup 1
+    xdotool mousemove 1100 250
+    sleep 4
+    import -window root "$HOME/whole.png"
+    convert "$HOME/whole.png" -crop 853x724+0+0 +repage "$out"
     ;;
   rank-legend)
     # Filters > Color Creation and Processing > Colorize Faces by Distance
@@ -79,9 +92,9 @@ shots=("$@")
 [ ${#shots[@]} -gt 0 ] || shots=(rank-colours export-dialog rank-legend)
 for shot in "${shots[@]}"; do
   case "$shot" in
-    rank-colours|export-dialog|rank-legend) ;;
+    rank-colours|export-dialog|rank-legend|duck-textured) ;;
     -h|--help) sed -n '2,22p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "make-screenshot: unknown picture '$shot' (rank-colours, export-dialog, rank-legend)" >&2; exit 2 ;;
+    *) echo "make-screenshot: unknown picture '$shot' (rank-colours, export-dialog, rank-legend, duck-textured)" >&2; exit 2 ;;
   esac
 done
 build=${DRM_BUILD_DIR:-$here/build}
@@ -104,6 +117,14 @@ chmod 700 "$tmp/runtime"
 for shot in "${shots[@]}"; do
   input=$mesh
   [ "$shot" != rank-colours ] || input=$coloured
+  if [ "$shot" = duck-textured ]; then
+    duck="$here/../shared/meshes-attributes"
+    [ -f "$duck/duck.obj" ] || { echo "make-screenshot: $duck/duck.obj is missing" >&2; exit 1; }
+    mkdir -p "$tmp/duck"
+    cp "$duck/duckCM.tga" "$tmp/duck/"
+    "$build/bin/drm" encode "$duck/duck.obj" "$tmp/duck/duck.drm" >/dev/null
+    input=$tmp/duck/duck.drm
+  fi
   rm -f "$tmp/shot.png"
   HOME="$tmp/home" XDG_CONFIG_HOME="$tmp/home/.config" XDG_RUNTIME_DIR="$tmp/runtime" \
     xvfb-run -a -s "-screen 0 1280x900x24" bash "$here/scripts/make-screenshot.sh" --inside-xvfb \

@@ -14,6 +14,7 @@ packages=(
   libflann-dev liblz4-dev   # the codec's kd-tree index (header-only; its headers include lz4.h)
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev
   xvfb xauth dpkg-dev imagemagick xdotool x11-apps
+  qt5-image-formats-plugins   # MeshLab reads TGA, TIFF and WebP textures (duck.obj's duckCM.tga)
   util-linux   # setpriv: the file-permission tests run as the user nobody
   clang libfuzzer-14-dev libclang-rt-14-dev
   libdraco-dev draco libmeshoptimizer-dev libopenctm-dev libzstd-dev   # drm-peer-bench only

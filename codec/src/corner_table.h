@@ -25,7 +25,7 @@ struct CornerTable {
     // opposite[c]: the corner across the edge opposite c, or kNoCorner.
     std::vector<uint32_t> opposite;
     // The interior edges, each once, as the lower of its two corners, in
-    // the order both coders visit them (by vertex pair).
+    // the order both coders visit them (by that corner).
     std::vector<uint32_t> interiorEdges;
     // Corners of each vertex, in corner order: vertexCorners[cornerStart[v]
     // .. cornerStart[v + 1]).
