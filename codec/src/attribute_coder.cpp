@@ -516,6 +516,14 @@ std::vector<uint8_t> encodeAttribute(const AttributeValues& a, const AttributeMe
     return best;
 }
 
+bool attributeNeedsOpposites(const uint8_t* data, size_t size) {
+    if (size < 3) return false;
+    const AttributeLayout layout = AttributeLayout(data[1]);
+    const AttributePredictor predictor = AttributePredictor(data[2]);
+    return usesWedges(layout) || predictor == AttributePredictor::Parallelogram ||
+           predictor == AttributePredictor::AdjacentFace;
+}
+
 AttributeValues decodeAttribute(const uint8_t* data, size_t size, const AttributeMesh& mesh) {
     ByteReader in(data, size, "attribute section");
     AttributeValues a;

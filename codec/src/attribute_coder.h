@@ -76,6 +76,10 @@ struct AttributeMesh {
 // The section payload (semantic, layout and parameters included).
 std::vector<uint8_t> encodeAttribute(const AttributeValues& attribute, const AttributeMesh& mesh);
 
+// Whether decoding this payload needs the corner table's opposites (seams,
+// parallelograms, adjacent faces); false for a payload too short to say.
+bool attributeNeedsOpposites(const uint8_t* data, size_t size);
+
 // Throws Error("corrupt file: ...") on a payload that does not decode to
 // exactly one value per element.
 AttributeValues decodeAttribute(const uint8_t* data, size_t size, const AttributeMesh& mesh);

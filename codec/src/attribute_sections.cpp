@@ -424,7 +424,9 @@ AttributeEncoding encodeAttributeSections(const Mesh& in, const EncodeOptions& o
 void decodeAttributeSections(const FileParts& parts, Decoded& result) {
     Mesh& m = result.mesh;
     const size_t V = result.quantized.size() / 3, corners = m.triangles.size(), F = corners / 3;
-    const CornerTable table = buildCornerTable(m.triangles, V);
+    // Opposite corners only once a section needs them.
+    CornerTable table = buildCornerTable(m.triangles, V, false);
+    bool haveOpposites = false;
     const AttributeMesh mesh{m.triangles, result.quantized, V, table};
     std::vector<AttributeValues> welded;
     uint32_t seen = 0;
@@ -447,6 +449,10 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
             result.stats.attributeSizes.push_back(
                 {kind == kMaterialNames ? "materials" : kind == kTextureNames ? "textures" : "metadata", p.size});
             continue;
+        }
+        if (!haveOpposites && attributeNeedsOpposites(p.data, p.size)) {
+            addOpposites(table, m.triangles);
+            haveOpposites = true;
         }
         AttributeValues a = decodeAttribute(p.data, p.size, mesh);
         const std::string name = sectionName(a.semantic, a.layout);

@@ -10,10 +10,9 @@ bool degenerate(const std::vector<uint32_t>& t, uint32_t f) {
 
 }  // namespace
 
-CornerTable buildCornerTable(const std::vector<uint32_t>& t, size_t vertexCount) {
+CornerTable buildCornerTable(const std::vector<uint32_t>& t, size_t vertexCount, bool withOpposites) {
     const size_t corners = t.size();
     CornerTable table;
-    table.opposite.assign(corners, kNoCorner);
 
     // Corners of each vertex (a counting sort: no comparison sort, which
     // cost a third of the attribute decoding time).
@@ -23,7 +22,14 @@ CornerTable buildCornerTable(const std::vector<uint32_t>& t, size_t vertexCount)
     table.vertexCorners.resize(corners);
     std::vector<uint32_t> fill(table.cornerStart.begin(), table.cornerStart.end() - 1);
     for (uint32_t c = 0; c < corners; ++c) table.vertexCorners[fill[t[c]]++] = c;
+    if (withOpposites) addOpposites(table, t);
+    return table;
+}
 
+void addOpposites(CornerTable& table, const std::vector<uint32_t>& t) {
+    const size_t corners = t.size();
+    table.opposite.assign(corners, kNoCorner);
+    table.interiorEdges.clear();
     // The edge opposite corner c joins u and v; the faces around u that
     // also hold v share it. Exactly one other such face: an interior edge.
     for (uint32_t c = 0; c < corners; ++c) {
@@ -43,7 +49,6 @@ CornerTable buildCornerTable(const std::vector<uint32_t>& t, size_t vertexCount)
     }
     for (uint32_t c = 0; c < corners; ++c)
         if (table.opposite[c] != kNoCorner && table.opposite[c] > c) table.interiorEdges.push_back(c);
-    return table;
 }
 
 }  // namespace drm

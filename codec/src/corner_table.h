@@ -22,7 +22,8 @@ inline uint32_t nextCorner(uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
 inline uint32_t previousCorner(uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
 
 struct CornerTable {
-    // opposite[c]: the corner across the edge opposite c, or kNoCorner.
+    // opposite[c]: the corner across the edge opposite c, or kNoCorner
+    // (empty until addOpposites when built without them).
     std::vector<uint32_t> opposite;
     // The interior edges, each once, as the lower of its two corners, in
     // the order both coders visit them (by that corner).
@@ -33,7 +34,11 @@ struct CornerTable {
     std::vector<uint32_t> vertexCorners;
 };
 
-CornerTable buildCornerTable(const std::vector<uint32_t>& triangles, size_t vertexCount);
+// withOpposites false leaves opposite and interiorEdges empty (the costly
+// part, which per-vertex sections with geometric or ring predictions do not
+// need); addOpposites fills them later.
+CornerTable buildCornerTable(const std::vector<uint32_t>& triangles, size_t vertexCount, bool withOpposites = true);
+void addOpposites(CornerTable& table, const std::vector<uint32_t>& triangles);
 
 // The corner of face `face` at vertex v, or kNoCorner.
 inline uint32_t cornerAt(const std::vector<uint32_t>& triangles, uint32_t face, uint32_t v) {
