@@ -150,6 +150,43 @@ bool moveToFloatEdges(FuzzedDataProvider& in, drm::Mesh& m) {
     return false;
 }
 
+// Gives the mesh some of the attributes a file can carry, values drawn from
+// the input (often repeated, so that wedges and seams appear), and perhaps a
+// vertex per corner (welding). Returns true if it added any.
+bool addAttributes(FuzzedDataProvider& in, drm::Mesh& m, drm::EncodeOptions& o) {
+    const uint32_t which = in.ConsumeIntegral<uint16_t>() & 0x3FF;
+    if (which == 0 || m.positions.empty()) return false;
+    const size_t V = m.vertexCount(), F = m.faceCount();
+    auto small = [&]() { return float(in.ConsumeIntegralInRange(-4, 4)) * 0.25f; };
+    if (which & 1)
+        for (size_t i = 0; i < 4 * V; ++i) m.colors.push_back(uint8_t(in.ConsumeIntegralInRange(0, 3) * 85));
+    if (which & 2)
+        for (size_t i = 0; i < 3 * V; ++i) m.normals.push_back(small());
+    if (which & 4)
+        for (size_t i = 0; i < 2 * V; ++i) m.texCoords.push_back(small());
+    if (which & 8)
+        for (size_t i = 0; i < V; ++i) m.quality.push_back(small());
+    if (which & 16)
+        for (size_t i = 0; i < 6 * F; ++i) m.cornerTexCoords.push_back(small());
+    if (which & 32)
+        for (size_t i = 0; i < 9 * F; ++i) m.cornerNormals.push_back(small());
+    if (which & 64)
+        for (size_t i = 0; i < 4 * F; ++i) m.faceColors.push_back(uint8_t(in.ConsumeIntegralInRange(0, 2) * 127));
+    if (which & 128)
+        for (size_t i = 0; i < F; ++i) m.faceQuality.push_back(small());
+    if (which & 256) {
+        for (size_t i = 0; i < F; ++i) m.faceMaterial.push_back(in.ConsumeIntegralInRange<uint32_t>(0, 2));
+        m.materials = {"a", "b", "c"};
+        m.metadata = {{"obj.mtl", "newmtl a\nnewmtl b\n"}};
+    }
+    if (which & 512) m.textures = {"t.png"};
+    o.normalBits = in.ConsumeIntegralInRange(4, 16);
+    o.uvBits = in.ConsumeIntegralInRange(1, 24);
+    o.weld = in.PickValueInArray({drm::EncodeOptions::Weld::Auto, drm::EncodeOptions::Weld::Off, drm::EncodeOptions::Weld::On});
+    o.verify = true;  // the encoder decodes its file and compares every corner
+    return true;
+}
+
 // Oriented triangles, each rotated to start at its smallest index, sorted.
 std::vector<std::array<uint32_t, 3>> canonicalFaces(const std::vector<uint32_t>& triangles,
                                                     const std::vector<uint32_t>& renumber) {
@@ -167,9 +204,23 @@ std::vector<std::array<uint32_t, 3>> canonicalFaces(const std::vector<uint32_t>&
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     FuzzedDataProvider in(data, size);
-    const drm::EncodeOptions options = optionsFrom(in);
+    drm::EncodeOptions options = optionsFrom(in);
+    drm::EncodeOptions withAttributes = options;
     drm::Mesh mesh = meshFrom(in);
     const bool spoiled = moveToFloatEdges(in, mesh);
+    if (addAttributes(in, mesh, withAttributes)) {
+        // With attributes the encoder checks itself (verify); welding may
+        // change the vertex list, so no further comparison here.
+        try {
+            drm::encode(mesh, withAttributes);
+        } catch (const drm::Error& e) {
+            const std::string message = e.what();
+            if (spoiled && message.find("non-finite") != std::string::npos) return 0;
+            fail("the encoder refuses a mesh with attributes: " + message);
+        }
+        if (spoiled) fail("the encoder took a mesh with a NaN or infinite coordinate");
+        return 0;
+    }
     drm::Encoded encoded;
     try {
         encoded = drm::encode(mesh, options);
