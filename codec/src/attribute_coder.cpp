@@ -363,6 +363,19 @@ void codeSeams(Io& io, std::vector<uint8_t>& seam) {
     }
 }
 
+// Codes (encoder) or decodes the seam bits of corner layouts, then builds
+// the wedges and sizes their value arrays (all zero).
+template <class Io>
+void codeWedgeLayout(Io& io, WedgeWalk& walk, std::vector<uint8_t>& seam) {
+    const bool wedged = usesWedges(walk.shape.layout);
+    if (wedged) codeSeams(io, seam);
+    walk.wedgeOf = wedgesOf(walk.mesh, seam, !wedged, &walk.cornerWedges);
+    walk.buildCorners();
+    const uint32_t wedges = walk.cornerWedges + uint32_t(walk.isolated.size());
+    walk.values.assign(size_t(wedges) * walk.D(), 0);
+    walk.zero.assign(wedges, 0);
+}
+
 // Codes (encoder) or decodes the values of the wedges, in order.
 template <class Io>
 void codeWedges(Io& io, WedgeWalk& walk, bool zeroFlags) {
@@ -439,15 +452,8 @@ std::vector<uint8_t> encodeWith(const AttributeValues& a, const AttributeMesh& m
     } else {
         WedgeWalk walk(mesh, a, predictor);
         std::vector<uint8_t> seam;
-        if (usesWedges(a.layout)) {
-            seam = seamsOf(a, mesh);
-            codeSeams(io, seam);
-        }
-        walk.wedgeOf = wedgesOf(mesh, seam, !usesWedges(a.layout), &walk.cornerWedges);
-        walk.buildCorners();
-        const uint32_t wedges = walk.cornerWedges + uint32_t(walk.isolated.size());
-        walk.values.assign(size_t(wedges) * D, 0);
-        walk.zero.assign(wedges, 0);
+        if (usesWedges(a.layout)) seam = seamsOf(a, mesh);
+        codeWedgeLayout(io, walk, seam);
         // A wedge's value is that of any of its corners (they agree: no seam
         // joins them), or of its vertex in per-vertex layouts.
         const size_t cornerBase = a.layout == AttributeLayout::WeldedVertex ? mesh.triangles.size() : 0;
@@ -569,16 +575,8 @@ AttributeValues decodeAttribute(const uint8_t* data, size_t size, const Attribut
         }
     } else {
         WedgeWalk walk(mesh, a, AttributePredictor(predictor));
-        std::vector<uint8_t> seam;
-        if (usesWedges(a.layout)) {
-            seam.assign(mesh.corners.interiorEdges.size(), 0);
-            codeSeams(io, seam);
-        }
-        walk.wedgeOf = wedgesOf(mesh, seam, !usesWedges(a.layout), &walk.cornerWedges);
-        walk.buildCorners();
-        const uint32_t wedges = walk.cornerWedges + uint32_t(walk.isolated.size());
-        walk.values.assign(size_t(wedges) * D, 0);
-        walk.zero.assign(wedges, 0);
+        std::vector<uint8_t> seam(usesWedges(a.layout) ? mesh.corners.interiorEdges.size() : 0, 0);
+        codeWedgeLayout(io, walk, seam);
         codeWedges(io, walk, zeroFlags);
         // Back to elements.
         const size_t corners = mesh.triangles.size();
