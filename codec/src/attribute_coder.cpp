@@ -441,8 +441,6 @@ std::vector<uint8_t> encodeWith(const AttributeValues& a, const AttributeMesh& m
     const size_t D = size_t(a.components);
     if (a.layout == AttributeLayout::Face) {
         ResidualCoder residuals(a.components, a.bits);
-        BitModel unused[1];
-        (void)unused;
         std::vector<uint32_t> values = a.values;
         uint32_t p[kMaxComponents];
         for (uint32_t f = 0; f < a.elementCount(); ++f) {

@@ -226,7 +226,7 @@ std::vector<uint8_t> stringsSection(uint8_t kind, const std::vector<std::string>
     return std::move(out.buffer());
 }
 
-std::vector<std::string> readStrings(ByteReader& in, const uint8_t* data) {
+std::vector<std::string> readStrings(ByteReader& in) {
     const uint64_t count = in.count("string count", in.remaining());
     std::vector<size_t> lengths(count);
     uint64_t total = 0;
@@ -240,7 +240,6 @@ std::vector<std::string> readStrings(ByteReader& in, const uint8_t* data) {
     if (mode == kTextRaw ? total != payload : total > kMaxTextRatio * payload + kTextSlack)
         throw Error("corrupt file: a name section's lengths do not fit its bytes");
     const uint8_t* bytes = in.bytes(payload, "text");
-    (void)data;
     const std::string text = mode == kTextRaw ? std::string(reinterpret_cast<const char*>(bytes), payload)
                                               : decodeText(bytes, payload, size_t(total));
     std::vector<std::string> strings;
@@ -423,7 +422,7 @@ AttributeEncoding encodeAttributeSections(const Mesh& in, const EncodeOptions& o
 
 void decodeAttributeSections(const FileParts& parts, Decoded& result) {
     Mesh& m = result.mesh;
-    const size_t V = result.quantized.size() / 3, corners = m.triangles.size(), F = corners / 3;
+    const size_t V = result.quantized.size() / 3, corners = m.triangles.size();
     // Opposite corners only once a section needs them.
     CornerTable table = buildCornerTable(m.triangles, V, false);
     bool haveOpposites = false;
@@ -437,10 +436,10 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
         if (kind >= kMaterialNames) {
             ByteReader in(p.data, p.size, "name section");
             in.u8("kind");
-            if (kind == kMaterialNames) m.materials = readStrings(in, p.data);
-            else if (kind == kTextureNames) m.textures = readStrings(in, p.data);
+            if (kind == kMaterialNames) m.materials = readStrings(in);
+            else if (kind == kTextureNames) m.textures = readStrings(in);
             else if (kind == kMetadata) {
-                const std::vector<std::string> pairs = readStrings(in, p.data);
+                const std::vector<std::string> pairs = readStrings(in);
                 if (pairs.size() % 2) throw Error("corrupt file: the metadata section holds an odd number of strings");
                 for (size_t i = 0; i < pairs.size(); i += 2) m.metadata.emplace_back(pairs[i], pairs[i + 1]);
             } else {
@@ -519,7 +518,6 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
             case AttributeSemantic::Texture: m.faceTexture = a.values; break;
         }
     }
-    (void)F;
     if (welded.empty()) return;
 
     // A welded mesh: one vertex per distinct (vertex, values) again.
