@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bit_model.h"
+#include "common.h"
 #include "container.h"
 #include "drm/drm.h"
 #include "octahedral.h"
@@ -18,15 +19,6 @@ constexpr int kMaxValueBits = 32;
 constexpr int kMaxLength = kMaxValueBits + 1;
 constexpr int kMagnitudeContexts = 6;
 constexpr uint8_t kFlagZeroNormals = 1;
-
-int bitLength(uint64_t m) {
-    int n = 0;
-    while (m) {
-        ++n;
-        m >>= 1;
-    }
-    return n;
-}
 
 // The residual models of one component: contexts from the previous
 // residual's size on this component and, for the later components,
@@ -85,22 +77,6 @@ struct ResidualCoder {
             if (!Io::kEncoding) value[j] = uint32_t((uint64_t(prediction[j]) + uint64_t(r)) & (modulus - 1));
         }
     }
-};
-
-struct UnionFind {
-    explicit UnionFind(size_t n) : parent(n) {
-        for (size_t i = 0; i < n; ++i) parent[i] = uint32_t(i);
-    }
-    uint32_t find(uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void join(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-    std::vector<uint32_t> parent;
 };
 
 bool usesWedges(AttributeLayout layout) { return layout == AttributeLayout::Corner || layout == AttributeLayout::WeldedVertex; }
@@ -432,12 +408,12 @@ std::vector<uint32_t> wedgesOf(const AttributeMesh& mesh, const std::vector<uint
             if (seam[e]) continue;
             const uint32_t c0 = mesh.corners.interiorEdges[e], c1 = mesh.corners.opposite[c0];
             const uint32_t a0 = nextCorner(c0), b0 = previousCorner(c0);
-            sets.join(a0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[a0]));
-            sets.join(b0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[b0]));
+            sets.joinToLower(a0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[a0]));
+            sets.joinToLower(b0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[b0]));
         }
         std::vector<uint32_t> ofRoot(corners, none);
         for (size_t c = 0; c < corners; ++c) {
-            uint32_t& w = ofRoot[sets.find(uint32_t(c))];
+            uint32_t& w = ofRoot[sets.root(uint32_t(c))];
             if (w == none) w = next++;
             wedgeOf[c] = w;
         }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "common.h"
 #include "container.h"
 #include "drm/drm.h"
 #include "range_coder.h"
@@ -22,11 +23,6 @@ constexpr int kActivities = 7;   // no refined neighbour, then 6 buckets of thei
 constexpr int kAxisClasses = 4;  // first axis; earlier axes' symbols summed 0, 1, 2+
 constexpr int kContexts = kKinds * kActivities * kAxisClasses * 2;
 
-int bitLength(uint64_t m) {
-    int n = 0;
-    for (; m != 0; m >>= 1) ++n;
-    return n;
-}
 
 int64_t floorDiv(int64_t a, int64_t b) {  // b > 0
     const int64_t q = a / b;

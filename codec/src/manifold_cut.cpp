@@ -4,7 +4,7 @@
 #include <array>
 
 #include "drm/drm.h"
-#include "corner_sets.h"
+#include "common.h"
 #include "halfedge_map.h"
 
 namespace drm {
@@ -91,7 +91,7 @@ std::vector<uint8_t> orient(Joins& joins, size_t faceCount) {
 // Returns the new vertex of every corner; fills copyOf.
 std::vector<uint32_t> numberFans(const std::vector<uint32_t>& t, const Joins& joins, size_t vertexCount,
                                  std::vector<uint32_t>& copyOf) {
-    CornerSets fans(t.size());
+    UnionFind fans(t.size());
     for (uint32_t s = 0; s < t.size(); ++s) {
         const uint32_t p = joins.partner[s];
         if (p == kNone || p < s) continue;

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "common.h"
 #include "drm/drm.h"
 
 namespace drm {
@@ -60,11 +61,6 @@ void checkExtraContext(int extraContext, int extraContexts) {
                     " is outside [0, " + std::to_string(extraContexts) + ")");
 }
 
-int bitLength(uint64_t w) {
-    int n = 0;
-    for (; w != 0; w >>= 1) ++n;
-    return n;
-}
 
 }  // namespace
 
