@@ -57,7 +57,7 @@ struct ResidualCoder {
                 const int n0 = bitLength(mag);
                 int n = 1;
                 while (n < kMaxLength && io.bit(m.longer[context][n], n0 > n)) ++n;
-                if (n > bits) throw Error("corrupt file: an attribute residual is longer than its values");
+                if (n > bits) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute residual is longer than its values");
                 const int negative = io.bit(m.sign[j > 0 ? 1 : 0], r < 0);
                 uint64_t low = 0;
                 const int modelled = std::min(n - 1, 2);
@@ -436,11 +436,11 @@ AttributeValues decodeAttribute(const uint8_t* data, size_t size, const Attribut
     AttributeValues a;
     const uint8_t semantic = in.u8("attribute kind");
     if (semantic < uint8_t(AttributeSemantic::Color) || semantic > uint8_t(AttributeSemantic::Texture))
-        throw Error("unsupported file: unknown attribute kind " + std::to_string(semantic));
+        throw Error(ErrorKind::Unsupported, "unsupported file: unknown attribute kind " + std::to_string(semantic));
     a.semantic = AttributeSemantic(semantic);
     const uint8_t layout = in.u8("attribute layout");
     if (layout > uint8_t(AttributeLayout::WeldedVertex))
-        throw Error("corrupt file: unknown attribute layout " + std::to_string(layout));
+        throw Error(ErrorKind::Corrupt, "corrupt file: unknown attribute layout " + std::to_string(layout));
     a.layout = AttributeLayout(layout);
     const uint8_t predictor = in.u8("attribute predictor");
     a.components = in.u8("attribute components");
@@ -448,20 +448,20 @@ AttributeValues decodeAttribute(const uint8_t* data, size_t size, const Attribut
     const uint8_t flags = in.u8("attribute flags");
     if (a.components < 1 || a.components > kMaxComponents || a.bits < 1 || a.bits > kMaxValueBits ||
         (flags & ~kFlagZeroNormals) != 0)
-        throw Error("corrupt file: an attribute section's value layout is invalid");
+        throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section's value layout is invalid");
     if (a.semantic == AttributeSemantic::TexCoord) {
         a.uvOrigin[0] = in.f64("texture coordinate origin");
         a.uvOrigin[1] = in.f64("texture coordinate origin");
         a.uvStep = in.f64("texture coordinate step");
         if (!std::isfinite(a.uvOrigin[0]) || !std::isfinite(a.uvOrigin[1]) || !std::isfinite(a.uvStep) || !(a.uvStep > 0))
-            throw Error("corrupt file: the texture coordinate grid is not finite");
+            throw Error(ErrorKind::Corrupt, "corrupt file: the texture coordinate grid is not finite");
     }
     const std::vector<AttributePredictor> allowed = predictorsFor(a);
     if (std::find(allowed.begin(), allowed.end(), AttributePredictor(predictor)) == allowed.end())
-        throw Error("corrupt file: attribute predictor " + std::to_string(predictor) + " does not fit its attribute");
+        throw Error(ErrorKind::Corrupt, "corrupt file: attribute predictor " + std::to_string(predictor) + " does not fit its attribute");
     const bool zeroFlags = (flags & kFlagZeroNormals) != 0;
     if (zeroFlags && a.semantic != AttributeSemantic::Normal)
-        throw Error("corrupt file: zero flags on an attribute that is not a normal");
+        throw Error(ErrorKind::Corrupt, "corrupt file: zero flags on an attribute that is not a normal");
     const size_t D = size_t(a.components);
     RangeDecoder coder(data + in.offset(), in.remaining());
     Reader io{coder};
@@ -507,7 +507,7 @@ AttributeValues decodeAttribute(const uint8_t* data, size_t size, const Attribut
             if (zeroFlags) a.zero[element] = walk.zero[w];
         }
     }
-    if (coder.bytesPastEnd() > 0) throw Error("corrupt file: an attribute section ends before its last value");
+    if (coder.bytesPastEnd() > 0) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section ends before its last value");
     return a;
 }
 

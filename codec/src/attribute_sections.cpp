@@ -37,7 +37,7 @@ struct Quantized {
 
 void checkSize(size_t have, size_t per, size_t count, const char* array, const char* unit) {
     if (have != 0 && have != per * count)
-        throw Error(std::string("the mesh's ") + array + " array holds " + std::to_string(have) + " values; it must hold " +
+        throw Error(ErrorKind::InvalidInput, std::string("the mesh's ") + array + " array holds " + std::to_string(have) + " values; it must hold " +
                     std::to_string(per) + " per " + unit + " (" + std::to_string(per * count) + ")");
 }
 
@@ -71,7 +71,7 @@ Quantized normalsOf(const std::vector<float>& n, AttributeLayout layout, int bit
     for (size_t i = 0; i < count; ++i) {
         const double x = n[3 * i], y = n[3 * i + 1], z = n[3 * i + 2];
         if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-            throw Error((perCorner ? cornerName(i) : "vertex " + std::to_string(i)) + " has a non-finite normal");
+            throw Error(ErrorKind::InvalidInput, (perCorner ? cornerName(i) : "vertex " + std::to_string(i)) + " has a non-finite normal");
         if (x == 0 && y == 0 && z == 0) {
             q.shape.zero[i] = 1;
             continue;
@@ -93,7 +93,7 @@ Quantized texCoordsOf(const std::vector<float>& uv, AttributeLayout layout, int 
         for (int k = 0; k < 2; ++k) {
             const double x = uv[2 * i + k];
             if (!std::isfinite(x))
-                throw Error((perCorner ? cornerName(i) : "vertex " + std::to_string(i)) +
+                throw Error(ErrorKind::InvalidInput, (perCorner ? cornerName(i) : "vertex " + std::to_string(i)) +
                             " has a non-finite texture coordinate");
             if (i == 0 || x < lo[k]) lo[k] = x;
             if (i == 0 || x > hi[k]) hi[k] = x;
@@ -110,7 +110,7 @@ Quantized texCoordsOf(const std::vector<float>& uv, AttributeLayout layout, int 
             const uint32_t v = uint32_t(std::min(std::max(t, 0.0), top));
             q.shape.values[2 * i + k] = v;
             if (!std::isfinite(float(lo[k] + double(v) * q.shape.uvStep)))
-                throw Error("the texture coordinates span more than a float can hold (" +
+                throw Error(ErrorKind::InvalidInput, "the texture coordinates span more than a float can hold (" +
                             (perCorner ? cornerName(i) : "vertex " + std::to_string(i)) + ")");
         }
     return q;
@@ -184,7 +184,7 @@ std::vector<std::string> readStrings(ByteReader& in) {
         const uint8_t* bytes = in.bytes(n, "string");
         strings.emplace_back(reinterpret_cast<const char*>(bytes), n);
     }
-    if (in.remaining() != 0) throw Error("corrupt file: unexpected bytes after the strings of a name section");
+    if (in.remaining() != 0) throw Error(ErrorKind::Corrupt, "corrupt file: unexpected bytes after the strings of a name section");
     return strings;
 }
 
@@ -237,12 +237,12 @@ void checkAttributes(const Mesh& m, const EncodeOptions& options) {
     checkSize(m.faceMaterial.size(), 1, F, "faceMaterial", "face");
     checkSize(m.faceTexture.size(), 1, F, "faceTexture", "face");
     if (options.normalBits < kMinNormalBits || options.normalBits > kMaxNormalBits)
-        throw Error("normal bits must be between " + std::to_string(kMinNormalBits) + " and " +
+        throw Error(ErrorKind::InvalidInput, "normal bits must be between " + std::to_string(kMinNormalBits) + " and " +
                     std::to_string(kMaxNormalBits) + ", not " + std::to_string(options.normalBits));
     if (options.uvBits < kMinUvBits || options.uvBits > kMaxUvBits)
-        throw Error("texture coordinate bits must be between " + std::to_string(kMinUvBits) + " and " +
+        throw Error(ErrorKind::InvalidInput, "texture coordinate bits must be between " + std::to_string(kMinUvBits) + " and " +
                     std::to_string(kMaxUvBits) + ", not " + std::to_string(options.uvBits));
-    if (options.attributes & ~kAttrAll) throw Error("unknown attribute bits " + std::to_string(options.attributes));
+    if (options.attributes & ~kAttrAll) throw Error(ErrorKind::InvalidInput, "unknown attribute bits " + std::to_string(options.attributes));
 }
 
 bool shouldWeld(const Mesh& mesh, const std::vector<int32_t>& quantized, const EncodeOptions& options) {
@@ -366,7 +366,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
     uint32_t seen = 0;
     for (size_t s = 0; s < parts.attributes.size(); ++s) {
         const FileParts::Payload& p = parts.attributes[s];
-        if (p.size == 0) throw Error("corrupt file: attribute section " + std::to_string(s) + " is empty");
+        if (p.size == 0) throw Error(ErrorKind::Corrupt, "corrupt file: attribute section " + std::to_string(s) + " is empty");
         const uint8_t kind = p.data[0];
         if (kind >= kMaterialNames) {
             ByteReader in(p.data, p.size, "name section");
@@ -375,10 +375,10 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
             else if (kind == kTextureNames) m.textures = readStrings(in);
             else if (kind == kMetadata) {
                 const std::vector<std::string> pairs = readStrings(in);
-                if (pairs.size() % 2) throw Error("corrupt file: the metadata section holds an odd number of strings");
+                if (pairs.size() % 2) throw Error(ErrorKind::Corrupt, "corrupt file: the metadata section holds an odd number of strings");
                 for (size_t i = 0; i < pairs.size(); i += 2) m.metadata.emplace_back(pairs[i], pairs[i + 1]);
             } else {
-                throw Error("unsupported file: unknown attribute section kind " + std::to_string(kind));
+                throw Error(ErrorKind::Unsupported, "unsupported file: unknown attribute section kind " + std::to_string(kind));
             }
             result.stats.attributeSizes.push_back(
                 {kind == kMaterialNames ? "materials" : kind == kTextureNames ? "textures" : "metadata", p.size});
@@ -392,7 +392,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
                                     : a.semantic == AttributeSemantic::TexCoord ? (a.layout == AttributeLayout::Corner ? 4 : 2)
                                     : a.semantic == AttributeSemantic::Quality ? (a.layout == AttributeLayout::Face ? 7 : 3)
                                     : a.semantic == AttributeSemantic::Material ? 8 : 9);
-        if (seen & bit) throw Error("corrupt file: two " + name + " sections");
+        if (seen & bit) throw Error(ErrorKind::Corrupt, "corrupt file: two " + name + " sections");
         seen |= bit;
         const bool faceSemantic = a.semantic == AttributeSemantic::Material || a.semantic == AttributeSemantic::Texture;
         if ((a.layout == AttributeLayout::Face) != (faceSemantic || bit == kAttrFaceColors || bit == kAttrFaceQuality) ||
@@ -404,7 +404,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
             (a.semantic != AttributeSemantic::Color && a.semantic != AttributeSemantic::Normal &&
              a.semantic != AttributeSemantic::TexCoord && (a.components != 1 || a.bits != 32)) ||
             (a.semantic == AttributeSemantic::Color && a.components < 3))
-            throw Error("corrupt file: the " + name + " section's layout does not fit its kind");
+            throw Error(ErrorKind::Corrupt, "corrupt file: the " + name + " section's layout does not fit its kind");
         if (a.layout == AttributeLayout::WeldedVertex) welded.push_back(a);
         // Values to arrays (per element of the layout; welded ones are
         // scattered to vertices after the split below).
@@ -435,7 +435,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
                 out.resize(2 * n);
                 for (size_t e = 0; e < 2 * n; ++e) {
                     out[e] = float(a.uvOrigin[e % 2] + double(a.values[e]) * a.uvStep);
-                    if (!std::isfinite(out[e])) throw Error("corrupt file: a texture coordinate is not a finite float");
+                    if (!std::isfinite(out[e])) throw Error(ErrorKind::Corrupt, "corrupt file: a texture coordinate is not a finite float");
                 }
                 break;
             }
@@ -492,7 +492,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
                     for (int k = 0; k < 2; ++k) {
                         m.texCoords[2 * v + k] = float(a.uvOrigin[k] + double(a.values[2 * elementOf(v) + k]) * a.uvStep);
                         if (!std::isfinite(m.texCoords[2 * v + k]))
-                            throw Error("corrupt file: a texture coordinate is not a finite float");
+                            throw Error(ErrorKind::Corrupt, "corrupt file: a texture coordinate is not a finite float");
                     }
                 break;
             case AttributeSemantic::Quality:
@@ -504,6 +504,18 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
     }
     m.triangles.swap(triangles);
     result.quantized.swap(quantized);
+}
+
+std::string attributeSectionName(const uint8_t* data, size_t size) {
+    if (size == 0) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section is empty");
+    const uint8_t kind = data[0];
+    if (kind == kMaterialNames) return "materials";
+    if (kind == kTextureNames) return "textures";
+    if (kind == kMetadata) return "metadata";
+    if (kind < uint8_t(AttributeSemantic::Color) || kind > uint8_t(AttributeSemantic::Texture))
+        throw Error(ErrorKind::Unsupported, "unsupported file: unknown attribute kind " + std::to_string(kind));
+    if (size < 2) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section ends inside its header");
+    return sectionName(AttributeSemantic(kind), AttributeLayout(data[1]));
 }
 
 }  // namespace drm

@@ -115,7 +115,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, Grid
     for (int a = 0; a < 3; ++a) contexts[a] = magnitudeContext(s, self, parent, a);
     const uint32_t best = Io::kEncoding ? bestPrediction(s, p, choiceModel, contexts, actual) : 0;
     const uint32_t choice = io.symbol(choiceModel, best);
-    if (choice >= uint32_t(p.count)) throw Error("corrupt file: a geometry predictor choice is out of range");
+    if (choice >= uint32_t(p.count)) throw Error(ErrorKind::Corrupt, "corrupt file: a geometry predictor choice is out of range");
     s.previousChoice = choice;
     const GridPoint base = p.candidate[choice];
     const GridPoint r = actual - base;
@@ -138,7 +138,7 @@ uint32_t codeChildCount(Io& io, CodingState& s, uint32_t count) {
     const int n = bitLength(w);
     int zeros = 0;
     while (io.plain(zeros < n - 1 ? 0 : 1, 1) == 0)
-        if (++zeros > 31) throw Error("corrupt file: a child count in the geometry section is too long");
+        if (++zeros > 31) throw Error(ErrorKind::Corrupt, "corrupt file: a child count in the geometry section is too long");
     const uint64_t decoded = (uint64_t(1) << zeros) | io.plain(w, zeros);
     return uint32_t(std::min<uint64_t>(decoded - 1 + kDirectChildCounts, 0xFFFFFFFFu));
 }
@@ -195,14 +195,14 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     // beyond that is refused before anything is allocated.
     constexpr uint64_t kMaxVerticesPerByte = 8192;
     if (vertexCount > (uint64_t(size) + 8) * kMaxVerticesPerByte)
-        throw Error("corrupt file: " + std::to_string(vertexCount) + " vertices cannot fit in a geometry section of " +
+        throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(vertexCount) + " vertices cannot fit in a geometry section of " +
                     std::to_string(size) + " bytes");
     const size_t n = size_t(vertexCount);
     const int32_t top = gridMax(bits);
     RangeDecoder coder(data, size);
     Reader io{coder};
     const int cellBits = int(coder.decodeBits(kCellBitsWidth));
-    if (cellBits > bits) throw Error("corrupt file: the geometry section's cell size is larger than the grid");
+    if (cellBits > bits) throw Error(ErrorKind::Corrupt, "corrupt file: the geometry section's cell size is larger than the grid");
     // The count is only a claim until the stream delivers the vertices:
     // tables grow as they are decoded, so a short or garbage section fails
     // before memory is committed to it.
@@ -218,7 +218,7 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
         s.begin(parent);
         GridPoint at;
         if (parent == kNoVertex) {
-            if (promised != 0) throw Error("corrupt file: the geometry tree is inconsistent");
+            if (promised != 0) throw Error(ErrorKind::Corrupt, "corrupt file: the geometry tree is inconsistent");
             const int32_t x = int32_t(coder.decodeWideBits(bits));  // in order: x, y, z
             const int32_t y = int32_t(coder.decodeWideBits(bits));
             const int32_t z = int32_t(coder.decodeWideBits(bits));
@@ -227,17 +227,17 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
             --promised;
             at = codeChild(io, s, self, parent, GridPoint{});
             if (at.x < 0 || at.y < 0 || at.z < 0 || at.x > top || at.y > top || at.z > top)
-                throw Error("corrupt file: geometry vertex " + std::to_string(self) + " falls outside the grid");
+                throw Error(ErrorKind::Corrupt, "corrupt file: geometry vertex " + std::to_string(self) + " falls outside the grid");
         }
         s.place(self, at);
         const uint32_t childCount = codeChildCount(io, s, 0);
         promised += childCount;
         if (promised > n - 1 - self)
-            throw Error("corrupt file: geometry vertex " + std::to_string(self) + " announces more children than remain");
+            throw Error(ErrorKind::Corrupt, "corrupt file: geometry vertex " + std::to_string(self) + " announces more children than remain");
         walk.expect(self, childCount);
-        if (coder.bytesPastEnd() > 0) throw Error("corrupt file: the geometry section ends early");
+        if (coder.bytesPastEnd() > 0) throw Error(ErrorKind::Corrupt, "corrupt file: the geometry section ends early");
     }
-    if (promised != 0) throw Error("corrupt file: the geometry section ends inside the tree");
+    if (promised != 0) throw Error(ErrorKind::Corrupt, "corrupt file: the geometry section ends inside the tree");
     std::vector<int32_t> grid(3 * n);
     for (size_t v = 0; v < n; ++v) {
         grid[3 * v] = s.pos[v].x;

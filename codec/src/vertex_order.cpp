@@ -49,8 +49,8 @@ std::vector<uint32_t> decodeVertexOrder(const uint8_t* data, size_t size, uint64
         const uint64_t z = n == 0 ? 0 : (uint64_t(1) << (n - 1)) | coder.decodeWideBits(n - 1);
         const int64_t value = previous + 1 + unzigzag(z);
         if (value < 0 || uint64_t(value) >= vertexCount || seen[size_t(value)])
-            throw Error("corrupt file: the vertex order section is not a permutation");
-        if (coder.bytesPastEnd() > 0) throw Error("corrupt file: the vertex order section ends early");
+            throw Error(ErrorKind::Corrupt, "corrupt file: the vertex order section is not a permutation");
+        if (coder.bytesPastEnd() > 0) throw Error(ErrorKind::Corrupt, "corrupt file: the vertex order section ends early");
         seen[size_t(value)] = 1;
         index = uint32_t(value);
         previous = value;
