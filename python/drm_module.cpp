@@ -132,7 +132,7 @@ void setAttributes(drm::Mesh& mesh, const py::dict& attributes) {
     }
 }
 
-py::dict attributesOf(const drm::Mesh& m) {
+py::dict attributeArrays(const drm::Mesh& m) {
     py::dict d;
     if (!m.colors.empty()) d["colors"] = shaped(m.colors, 4);
     if (!m.normals.empty()) d["normals"] = shaped(m.normals, 3);
@@ -255,7 +255,7 @@ PYBIND11_MODULE(drm, m) {
             const drm::Decoded d = decodeBytes(data);
             py::tuple mesh = py::make_tuple(shaped(d.mesh.positions, 3), shaped(d.mesh.triangles, 3));
             if (!attributes) return std::move(mesh);
-            return py::make_tuple(mesh[0], mesh[1], attributesOf(d.mesh));
+            return py::make_tuple(mesh[0], mesh[1], attributeArrays(d.mesh));
         },
         py::arg("data"), py::kw_only(), py::arg("attributes") = false,
         "decode(data) -> (vertices (n, 3) float32, faces (m, 3) uint32);\n"
@@ -269,7 +269,7 @@ PYBIND11_MODULE(drm, m) {
             out["faces"] = shaped(d.mesh.triangles, 3);
             out["quantized"] = shaped(d.quantized, 3);
             out["face_rank"] = shaped(d.faceRank, 1);
-            out["attributes"] = attributesOf(d.mesh);
+            out["attributes"] = attributeArrays(d.mesh);
             out["stats"] = statsDict(d.stats, true);
             return out;
         },
