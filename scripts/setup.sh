@@ -19,6 +19,7 @@ packages=(
   clang libfuzzer-14-dev libclang-rt-14-dev
   libdraco-dev draco libmeshoptimizer-dev libopenctm-dev libzstd-dev   # drm-peer-bench only
   python3-matplotlib python3-numpy   # tools/bench/make_plots.py, make_big_mesh.py, measure_scale.py
+  python3-dev python3-pybind11 pybind11-dev python3-pytest   # the Python module (python/) and its test
 )
 
 as_root() {

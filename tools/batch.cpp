@@ -66,12 +66,12 @@ std::vector<std::string> collectInputs(const std::vector<std::string>& paths,
             if (it->is_regular_file(typeError) && wanted(it->path().filename().string()))
                 found.push_back(it->path().string());
         }
-        if (error) throw drm::Error("cannot list " + path + ": " + error.message());
-        if (found.empty()) throw drm::Error("no " + kinds + " in " + path);
+        if (error) throw drm::Error(drm::ErrorKind::Io, "cannot list " + path + ": " + error.message());
+        if (found.empty()) throw drm::Error(drm::ErrorKind::InvalidInput, "no " + kinds + " in " + path);
         std::sort(found.begin(), found.end());
         files.insert(files.end(), found.begin(), found.end());
     }
-    if (files.empty()) throw drm::Error("no " + kinds + " given");
+    if (files.empty()) throw drm::Error(drm::ErrorKind::InvalidInput, "no " + kinds + " given");
     return files;
 }
 
@@ -79,19 +79,19 @@ std::vector<std::string> outputPaths(const std::vector<std::string>& inputs, con
                                      const std::string& extension) {
     std::error_code error;
     if (fs::exists(dir, error) && !fs::is_directory(dir, error))
-        throw drm::Error("cannot write into " + dir + ": it is not a folder");
+        throw drm::Error(drm::ErrorKind::Io, "cannot write into " + dir + ": it is not a folder");
     std::vector<std::string> outputs;
     std::map<std::string, std::string> seen;  // output -> input
     for (const std::string& input : inputs) {
         const std::string output = (fs::path(dir) / (fileStem(input) + extension)).string();
         const auto [it, inserted] = seen.emplace(output, input);
         if (!inserted)
-            throw drm::Error("two inputs would both be written to " + output + ": " + it->second + " and " + input +
+            throw drm::Error(drm::ErrorKind::InvalidInput, "two inputs would both be written to " + output + ": " + it->second + " and " + input +
                              " (nothing written)");
         outputs.push_back(output);
     }
     fs::create_directories(dir, error);
-    if (error) throw drm::Error("cannot create the folder " + dir + ": " + error.message());
+    if (error) throw drm::Error(drm::ErrorKind::Io, "cannot create the folder " + dir + ": " + error.message());
     return outputs;
 }
 
@@ -183,7 +183,7 @@ void runBatch(const BatchWords& words, const std::vector<BatchFile>& files, int 
         std::string list;
         for (size_t i = 0; i < failed.size() && i < 10; ++i) list += (i ? ", " : "") + failed[i];
         if (failed.size() > 10) list += ", ...";
-        throw drm::Error(std::to_string(failed.size()) + " of " + std::to_string(files.size()) +
+        throw drm::Error(drm::ErrorKind::InvalidInput, std::to_string(failed.size()) + " of " + std::to_string(files.size()) +
                          " files failed: " + list);
     }
 }

@@ -67,7 +67,7 @@ std::vector<std::string> collectMeshFiles(const std::vector<std::string>& paths)
                 const std::string file = entry.path().string();
                 if (drm::vcgio::isMeshFileName(file) && entry.is_regular_file(error)) found.push_back(file);
             }
-            if (error) throw drm::Error("cannot list " + path + ": " + error.message());
+            if (error) throw drm::Error(drm::ErrorKind::Io, "cannot list " + path + ": " + error.message());
             std::sort(found.begin(), found.end());
             files.insert(files.end(), found.begin(), found.end());
         } else {
@@ -282,7 +282,7 @@ int runBench(const std::vector<std::string>& args) {
     const drm::EncodeOptions options = encodeOptionsFrom(parsed);
 
     const std::vector<std::string> files = collectMeshFiles(parsed.positional);
-    if (files.empty()) throw drm::Error("no .ply, .obj, .off or .stl files in " + parsed.positional[0]);
+    if (files.empty()) throw drm::Error(drm::ErrorKind::InvalidInput, "no .ply, .obj, .off or .stl files in " + parsed.positional[0]);
 
     std::vector<BenchRow> rows;
     ProgressBar bar("");
@@ -300,7 +300,7 @@ int runBench(const std::vector<std::string>& args) {
 
     const size_t failed = size_t(std::count_if(rows.begin(), rows.end(), [](const BenchRow& r) { return r.status != "ok"; }));
     if (failed > 0)
-        throw drm::Error(std::to_string(failed) + " of " + std::to_string(rows.size()) +
+        throw drm::Error(drm::ErrorKind::InvalidInput, std::to_string(failed) + " of " + std::to_string(rows.size()) +
                          " meshes failed (see the table's last column)");
     return 0;
 }

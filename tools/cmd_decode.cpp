@@ -63,7 +63,7 @@ DecodedFile decodeFile(const std::string& input, const std::string& output, drm:
         if (bar) options.progress = bar->callback();
         decoded = drm::decode(bytes.data(), bytes.size(), options);
     } catch (const drm::Error& e) {
-        throw drm::Error("cannot decode " + input + ": " + e.what());
+        throw drm::Error(e.kind(), "cannot decode " + input + ": " + e.what());
     }
     if (bar) bar->clear();
     DecodedFile result;

@@ -85,7 +85,7 @@ EncodedFile encodeFile(const std::string& input, const std::string& output, drm:
     try {
         encoded = drm::encode(loaded.mesh, options);
     } catch (const drm::Error& e) {
-        throw drm::Error("cannot encode " + input + ": " + e.what());
+        throw drm::Error(e.kind(), "cannot encode " + input + ": " + e.what());
     }
     if (bar) bar->clear();
     drm::vcgio::writeFileAtomically(output, encoded.bytes);

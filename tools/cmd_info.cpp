@@ -11,13 +11,17 @@ namespace drm {
 namespace cli {
 
 const char* const kInfoHelp =
-    "usage: drm info IN.drm [--json]\n"
+    "usage: drm info IN.drm [--json] [--ranks]\n"
     "\n"
-    "Decodes IN.drm and prints its counts, options, section sizes, bits per\n"
-    "vertex (also of each attribute section: colours, normals, texture\n"
-    "coordinates, ...) and the histogram of rank codes (rank 0 = boundary edge).\n"
+    "Prints IN.drm's counts, options, section sizes and bits per vertex (also\n"
+    "of each attribute section: colours, normals, texture coordinates, ...),\n"
+    "read from its header and section table without decoding (at once, on\n"
+    "any file).\n"
     "\n"
     "options:\n"
+    "  --ranks  also decode the file for the boundary edges, the welded\n"
+    "           vertices and the histogram of rank codes (rank 0 = boundary\n"
+    "           edge); without it those JSON values are null\n"
     "  --json   one JSON object with the keys vertices, faces, components,\n"
     "           boundary_edges, bits, predictor, curvature, geometry,\n"
     "           refine_bits (low bits of the refine coder, 0 otherwise), levers,\n"
@@ -69,7 +73,7 @@ double bitsPerVertex(uint64_t bytes, const drm::Stats& s) {
     return s.vertices ? 8.0 * double(bytes) / double(s.vertices) : 0.0;
 }
 
-void printJson(const std::string& path, const drm::Stats& s) {
+void printJson(const std::string& path, const drm::Stats& s, bool ranks) {
     auto number = [](uint64_t v) { return std::to_string(v); };
     std::string out = "{\n";
     auto field = [&out](const std::string& key, const std::string& value, bool last = false) {
@@ -80,7 +84,7 @@ void printJson(const std::string& path, const drm::Stats& s) {
     field("vertices", number(s.vertices));
     field("faces", number(s.faces));
     field("components", number(s.components));
-    field("boundary_edges", number(s.boundaryEdges));
+    field("boundary_edges", ranks ? number(s.boundaryEdges) : "null");
     field("bits", std::to_string(s.bits));
     field("predictor", jsonString(drm::predictorName(s.predictor)));
     field("curvature", boolean(s.curvature));
@@ -95,7 +99,7 @@ void printJson(const std::string& path, const drm::Stats& s) {
     field("geometry_bytes", number(s.geometryBytes));
     field("vertex_order_bytes", number(s.vertexOrderBytes));
     field("attribute_bytes", number(s.attributeBytes));
-    field("welded_vertices", number(s.weldedVertices));
+    field("welded_vertices", ranks ? number(s.weldedVertices) : "null");
     std::string sections = "[";
     for (const drm::Stats::AttributeSize& section : s.attributeSizes)
         sections += std::string(sections.size() > 1 ? ", " : "") + "{\"name\": " + jsonString(section.name) +
@@ -113,12 +117,12 @@ void printJson(const std::string& path, const drm::Stats& s) {
         histogram += (histogram.size() > 1 ? ", " : "") + jsonString(std::to_string(rank)) + ": " +
                      number(s.rankHistogram[rank]);
     }
-    field("rank_histogram", histogram + "}", true);
+    field("rank_histogram", ranks ? histogram + "}" : "null", true);
     out += "}\n";
     std::fputs(out.c_str(), stdout);
 }
 
-void printText(const std::string& path, const drm::Stats& s) {
+void printText(const std::string& path, const drm::Stats& s, bool ranks) {
     auto row = [](const char* key, const std::string& value) { std::printf("%-20s %s\n", key, value.c_str()); };
     auto bytesAndRate = [](uint64_t bytes, double bpv) {
         return std::to_string(bytes) + " (" + fixed(bpv, 3) + " bits per vertex)";
@@ -127,7 +131,7 @@ void printText(const std::string& path, const drm::Stats& s) {
     row("vertices", std::to_string(s.vertices));
     row("faces", std::to_string(s.faces));
     row("components", std::to_string(s.components));
-    row("boundary edges", std::to_string(s.boundaryEdges));
+    if (ranks) row("boundary edges", std::to_string(s.boundaryEdges));
     row("bits per axis", std::to_string(s.bits));
     row("predictor", drm::predictorName(s.predictor));
     row("curvature", s.curvature ? "on" : "off");
@@ -145,8 +149,12 @@ void printText(const std::string& path, const drm::Stats& s) {
             std::printf("  %-18s %s\n", section.name.c_str(),
                         bytesAndRate(section.bytes, bitsPerVertex(section.bytes, s)).c_str());
     }
-    if (s.weldedVertices > 0) row("welded vertices", std::to_string(s.weldedVertices));
+    if (ranks && s.weldedVertices > 0) row("welded vertices", std::to_string(s.weldedVertices));
     row("total bytes", bytesAndRate(s.totalBytes, s.totalBitsPerVertex()));
+    if (!ranks) {
+        std::printf("rank codes           (drm info --ranks decodes the file to count them)\n");
+        return;
+    }
     const uint64_t codes = totalCodes(s);
     std::printf("rank codes           %llu (rank: count, share)\n", (unsigned long long)codes);
     for (size_t rank = 0; rank < s.rankHistogram.size(); ++rank) {
@@ -160,21 +168,30 @@ void printText(const std::string& path, const drm::Stats& s) {
 }  // namespace
 
 int runInfo(const std::vector<std::string>& args) {
-    const Arguments parsed = parseArguments("info", args, {}, {"--json"});
+    const Arguments parsed = parseArguments("info", args, {}, {"--json", "--ranks"});
     parsed.expectPositional(1, 1, "one .drm file");
     const std::string& input = parsed.positional[0];
     const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
-    drm::Decoded decoded;
-    {
+    // The header and section table say everything but the ranks (and a
+    // welded mesh's decoded vertex count): read at once, whatever the
+    // file's size. Only --ranks decodes.
+    drm::Stats stats;
+    try {
+        stats = drm::inspect(bytes).stats;
+    } catch (const drm::Error& e) {
+        throw drm::Error(e.kind(), "cannot decode " + input + ": " + e.what());
+    }
+    const bool ranks = parsed.has("--ranks");
+    if (ranks) {
         ProgressBar bar("reading " + fileName(input));
         try {
-            decoded = drm::decode(bytes, bar.callback());
+            stats = drm::decode(bytes, bar.callback()).stats;
         } catch (const drm::Error& e) {
-            throw drm::Error("cannot decode " + input + ": " + e.what());
+            throw drm::Error(e.kind(), "cannot decode " + input + ": " + e.what());
         }
     }
-    if (parsed.has("--json")) printJson(input, decoded.stats);
-    else printText(input, decoded.stats);
+    if (parsed.has("--json")) printJson(input, stats, ranks);
+    else printText(input, stats, ranks);
     return 0;
 }
 

@@ -145,7 +145,7 @@ int runRender(const std::vector<std::string>& args) {
     try {
         png = render::renderPng(scene);
     } catch (const drm::Error& e) {
-        throw drm::Error("cannot render " + input + ": " + e.what());
+        throw drm::Error(e.kind(), "cannot render " + input + ": " + e.what());
     }
     drm::vcgio::writeFileAtomically(output, png);
 

@@ -53,19 +53,19 @@ VerifiedFile verifyFile(const std::string& input, drm::EncodeOptions options, Pr
     try {
         encoded = drm::encode(loaded.mesh, options);
     } catch (const drm::Error& e) {
-        throw drm::Error("cannot encode " + input + ": " + e.what());
+        throw drm::Error(e.kind(), "cannot encode " + input + ": " + e.what());
     }
     if (bar) bar->setLabel("decoding " + fileName(input));
     drm::Decoded decoded;
     try {
         decoded = drm::decode(encoded.bytes, bar ? bar->callback() : drm::Progress());
     } catch (const drm::Error& e) {
-        throw drm::Error("cannot decode what " + input + " encoded to: " + e.what());
+        throw drm::Error(e.kind(), "cannot decode what " + input + " encoded to: " + e.what());
     }
     if (bar) bar->clear();
     std::string mismatch = findLosslessMismatch(loaded.mesh, encoded, decoded);
     if (mismatch.empty()) mismatch = findAttributeMismatch(loaded.mesh, options, encoded, decoded);
-    if (!mismatch.empty()) throw drm::Error(input + " does not survive encoding losslessly: " + mismatch);
+    if (!mismatch.empty()) throw drm::Error(drm::ErrorKind::InvalidInput, input + " does not survive encoding losslessly: " + mismatch);
     VerifiedFile result;
     result.notes = loaded.notes;
     result.repairs = repairsOf(encoded.stats);

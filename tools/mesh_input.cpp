@@ -19,7 +19,7 @@ drm::vcgio::LoadedMesh loadMeshForEncoding(const std::string& path) {
         std::lock_guard<std::mutex> lock(reading);
         loaded = drm::vcgio::loadMesh(path);
     }
-    if (loaded.mesh.vertexCount() == 0) throw drm::Error("cannot encode " + path + ": the mesh has no vertices");
+    if (loaded.mesh.vertexCount() == 0) throw drm::Error(drm::ErrorKind::InvalidInput, "cannot encode " + path + ": the mesh has no vertices");
     return loaded;
 }
 

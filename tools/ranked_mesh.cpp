@@ -14,7 +14,7 @@ RankedMesh decodeRankedMesh(const std::string& input, ProgressBar& bar) {
     try {
         decoded = drm::decode(bytes, bar.callback());
     } catch (const drm::Error& e) {
-        throw drm::Error("cannot decode " + input + ": " + e.what());
+        throw drm::Error(e.kind(), "cannot decode " + input + ": " + e.what());
     }
     RankedMesh ranked;
     ranked.mesh = std::move(decoded.mesh);
@@ -43,7 +43,7 @@ RankedMesh loadRankedMesh(const std::string& input, const Arguments& parsed, Pro
         ranked.faceRank = std::move(encoded.faceRank);
         ranked.stats = std::move(encoded.stats);
     } catch (const drm::Error& e) {
-        throw drm::Error("cannot encode " + input + ": " + e.what());
+        throw drm::Error(e.kind(), "cannot encode " + input + ": " + e.what());
     }
     return ranked;
 }

@@ -8,6 +8,34 @@ namespace drm {
 
 const char* version() { return "0.1.0"; }
 
+const char* leverName(int lever) {
+    static const char* const names[kLeverCount] = {"filter", "gap", "context", "angle"};
+    return lever >= 0 && lever < kLeverCount ? names[lever] : nullptr;
+}
+
+const RankPaletteEntry& rankPaletteEntry(int bucket) {
+    static const RankPaletteEntry palette[kRankBucketCount] = {
+        {64, 64, 64, "dark grey", "start triangle"},
+        {180, 192, 206, "pale blue-grey", "rank 1"},
+        {76, 175, 80, "green", "rank 2"},
+        {245, 166, 35, "orange", "rank 3"},
+        {214, 39, 40, "red", "rank 4+"},
+    };
+    return palette[bucket < 0 ? 0 : (bucket >= kRankBucketCount ? kRankBucketCount - 1 : bucket)];
+}
+
+const char* errorKindName(ErrorKind kind) {
+    switch (kind) {
+        case ErrorKind::InvalidInput: return "invalid input";
+        case ErrorKind::Corrupt: return "corrupt";
+        case ErrorKind::Unsupported: return "unsupported";
+        case ErrorKind::Cancelled: return "cancelled";
+        case ErrorKind::Io: return "i/o";
+        case ErrorKind::Internal: return "internal";
+    }
+    return "unknown";
+}
+
 const char* predictorName(Predictor p) {
     switch (p) {
         case Predictor::Auto: return "auto";
@@ -20,7 +48,7 @@ const char* predictorName(Predictor p) {
 Predictor parsePredictor(const std::string& name) {
     for (Predictor p : {Predictor::Auto, Predictor::Parallelogram, Predictor::Midpoint})
         if (name == predictorName(p)) return p;
-    throw Error("unknown predictor '" + name + "' (use auto, parallelogram or midpoint)");
+    throw Error(ErrorKind::InvalidInput, "unknown predictor '" + name + "' (use auto, parallelogram or midpoint)");
 }
 
 const char* geometryCoderName(GeometryCoder g) {
@@ -35,7 +63,7 @@ const char* geometryCoderName(GeometryCoder g) {
 GeometryCoder parseGeometryCoder(const std::string& name) {
     for (GeometryCoder g : {GeometryCoder::SpanningTree, GeometryCoder::Raw, GeometryCoder::Refine})
         if (name == geometryCoderName(g)) return g;
-    throw Error("unknown geometry coder '" + name + "' (use tree, refine or raw)");
+    throw Error(ErrorKind::InvalidInput, "unknown geometry coder '" + name + "' (use tree, refine or raw)");
 }
 
 Levers parseLevers(const std::string& list) {
@@ -46,12 +74,12 @@ Levers parseLevers(const std::string& list) {
     while (start <= list.size()) {
         const size_t comma = std::min(list.find(',', start), list.size());
         const std::string name = list.substr(start, comma - start);
-        if (name == "filter") levers.topologicalFilter = true;
-        else if (name == "gap") levers.gapClosing = true;
-        else if (name == "context") levers.confidenceContext = true;
-        else if (name == "angle") levers.angleOrder = true;
+        if (name == leverName(0)) levers.topologicalFilter = true;
+        else if (name == leverName(1)) levers.gapClosing = true;
+        else if (name == leverName(2)) levers.confidenceContext = true;
+        else if (name == leverName(3)) levers.angleOrder = true;
         else
-            throw Error("unknown lever '" + name + "' (use all, none, or a list of filter, gap, context, angle)");
+            throw Error(ErrorKind::InvalidInput, "unknown lever '" + name + "' (use all, none, or a list of filter, gap, context, angle)");
         start = comma + 1;
     }
     return levers;
@@ -63,10 +91,10 @@ std::string leversName(const Levers& l) {
     auto add = [&](bool on, const char* name) {
         if (on) names += (names.empty() ? "" : ",") + std::string(name);
     };
-    add(l.topologicalFilter, "filter");
-    add(l.gapClosing, "gap");
-    add(l.confidenceContext, "context");
-    add(l.angleOrder, "angle");
+    add(l.topologicalFilter, leverName(0));
+    add(l.gapClosing, leverName(1));
+    add(l.confidenceContext, leverName(2));
+    add(l.angleOrder, leverName(3));
     return names.empty() ? "none" : names;
 }
 

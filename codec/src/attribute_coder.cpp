@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bit_model.h"
+#include "common.h"
 #include "container.h"
 #include "drm/drm.h"
 #include "octahedral.h"
@@ -19,15 +20,6 @@ constexpr int kMaxValueBits = 32;
 constexpr int kMaxLength = kMaxValueBits + 1;
 constexpr int kMagnitudeContexts = 6;
 constexpr uint8_t kFlagZeroNormals = 1;
-
-int bitLength(uint64_t m) {
-    int n = 0;
-    while (m) {
-        ++n;
-        m >>= 1;
-    }
-    return n;
-}
 
 // The residual models of one component: contexts from the previous
 // residual's size on this component and, for the later components,
@@ -66,7 +58,7 @@ struct ResidualCoder {
                 const int n0 = bitLength(mag);
                 int n = 1;
                 while (n < kMaxLength && io.bit(m.longer[context][n], n0 > n)) ++n;
-                if (n > bits) throw Error("corrupt file: an attribute residual is longer than its values");
+                if (n > bits) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute residual is longer than its values");
                 const int negative = io.bit(m.sign[j > 0 ? 1 : 0], r < 0);
                 uint64_t low = 0;
                 const int modelled = std::min(n - 1, 2);
@@ -86,22 +78,6 @@ struct ResidualCoder {
             if (!Io::kEncoding) value[j] = uint32_t((uint64_t(prediction[j]) + uint64_t(r)) & (modulus - 1));
         }
     }
-};
-
-struct UnionFind {
-    explicit UnionFind(size_t n) : parent(n) {
-        for (size_t i = 0; i < n; ++i) parent[i] = uint32_t(i);
-    }
-    uint32_t find(uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void join(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-    std::vector<uint32_t> parent;
 };
 
 bool usesWedges(AttributeLayout layout) { return layout == AttributeLayout::Corner || layout == AttributeLayout::WeldedVertex; }
@@ -497,12 +473,12 @@ std::vector<uint32_t> wedgesOf(const AttributeMesh& mesh, const std::vector<uint
             if (seam[e]) continue;
             const uint32_t c0 = mesh.corners.interiorEdges[e], c1 = mesh.corners.opposite[c0];
             const uint32_t a0 = nextCorner(c0), b0 = previousCorner(c0);
-            sets.join(a0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[a0]));
-            sets.join(b0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[b0]));
+            sets.joinToLower(a0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[a0]));
+            sets.joinToLower(b0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[b0]));
         }
         std::vector<uint32_t> ofRoot(corners, none);
         for (size_t c = 0; c < corners; ++c) {
-            uint32_t& w = ofRoot[sets.find(uint32_t(c))];
+            uint32_t& w = ofRoot[sets.root(uint32_t(c))];
             if (w == none) w = next++;
             wedgeOf[c] = w;
         }
@@ -533,11 +509,11 @@ AttributeValues decodeAttribute(const uint8_t* data, size_t size, const Attribut
     AttributeValues a;
     const uint8_t semantic = in.u8("attribute kind");
     if (semantic < uint8_t(AttributeSemantic::Color) || semantic > uint8_t(AttributeSemantic::Texture))
-        throw Error("unsupported file: unknown attribute kind " + std::to_string(semantic));
+        throw Error(ErrorKind::Unsupported, "unsupported file: unknown attribute kind " + std::to_string(semantic));
     a.semantic = AttributeSemantic(semantic);
     const uint8_t layout = in.u8("attribute layout");
     if (layout > uint8_t(AttributeLayout::WeldedVertex))
-        throw Error("corrupt file: unknown attribute layout " + std::to_string(layout));
+        throw Error(ErrorKind::Corrupt, "corrupt file: unknown attribute layout " + std::to_string(layout));
     a.layout = AttributeLayout(layout);
     const uint8_t predictor = in.u8("attribute predictor");
     a.components = in.u8("attribute components");
@@ -545,20 +521,20 @@ AttributeValues decodeAttribute(const uint8_t* data, size_t size, const Attribut
     const uint8_t flags = in.u8("attribute flags");
     if (a.components < 1 || a.components > kMaxComponents || a.bits < 1 || a.bits > kMaxValueBits ||
         (flags & ~kFlagZeroNormals) != 0)
-        throw Error("corrupt file: an attribute section's value layout is invalid");
+        throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section's value layout is invalid");
     if (a.semantic == AttributeSemantic::TexCoord) {
         a.uvOrigin[0] = in.f64("texture coordinate origin");
         a.uvOrigin[1] = in.f64("texture coordinate origin");
         a.uvStep = in.f64("texture coordinate step");
         if (!std::isfinite(a.uvOrigin[0]) || !std::isfinite(a.uvOrigin[1]) || !std::isfinite(a.uvStep) || !(a.uvStep > 0))
-            throw Error("corrupt file: the texture coordinate grid is not finite");
+            throw Error(ErrorKind::Corrupt, "corrupt file: the texture coordinate grid is not finite");
     }
     const std::vector<AttributePredictor> allowed = predictorsFor(a);
     if (std::find(allowed.begin(), allowed.end(), AttributePredictor(predictor)) == allowed.end())
-        throw Error("corrupt file: attribute predictor " + std::to_string(predictor) + " does not fit its attribute");
+        throw Error(ErrorKind::Corrupt, "corrupt file: attribute predictor " + std::to_string(predictor) + " does not fit its attribute");
     const bool zeroFlags = (flags & kFlagZeroNormals) != 0;
     if (zeroFlags && a.semantic != AttributeSemantic::Normal)
-        throw Error("corrupt file: zero flags on an attribute that is not a normal");
+        throw Error(ErrorKind::Corrupt, "corrupt file: zero flags on an attribute that is not a normal");
     const size_t D = size_t(a.components);
     RangeDecoder coder(data + in.offset(), in.remaining());
     Reader io{coder};
@@ -596,7 +572,7 @@ AttributeValues decodeAttribute(const uint8_t* data, size_t size, const Attribut
             if (zeroFlags) a.zero[element] = walk.zero[w];
         }
     }
-    if (coder.bytesPastEnd() > 0) throw Error("corrupt file: an attribute section ends before its last value");
+    if (coder.bytesPastEnd() > 0) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section ends before its last value");
     return a;
 }
 

@@ -70,7 +70,7 @@ uint32_t parseAttributes(const std::string& list) {
         if (!known) {
             std::string names;
             for (const AttributeName& n : kNames) names += std::string(names.empty() ? "" : ", ") + n.name;
-            throw Error("unknown attribute '" + name + "' (use all, none, or a list of " + names + ")");
+            throw Error(ErrorKind::InvalidInput, "unknown attribute '" + name + "' (use all, none, or a list of " + names + ")");
         }
         start = comma + 1;
     }

@@ -39,7 +39,7 @@ struct Quantized {
 
 void checkSize(size_t have, size_t per, size_t count, const char* array, const char* unit) {
     if (have != 0 && have != per * count)
-        throw Error(std::string("the mesh's ") + array + " array holds " + std::to_string(have) + " values; it must hold " +
+        throw Error(ErrorKind::InvalidInput, std::string("the mesh's ") + array + " array holds " + std::to_string(have) + " values; it must hold " +
                     std::to_string(per) + " per " + unit + " (" + std::to_string(per * count) + ")");
 }
 
@@ -73,7 +73,7 @@ Quantized normalsOf(const std::vector<float>& n, AttributeLayout layout, int bit
     for (size_t i = 0; i < count; ++i) {
         const double x = n[3 * i], y = n[3 * i + 1], z = n[3 * i + 2];
         if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-            throw Error((perCorner ? cornerName(i) : "vertex " + std::to_string(i)) + " has a non-finite normal");
+            throw Error(ErrorKind::InvalidInput, (perCorner ? cornerName(i) : "vertex " + std::to_string(i)) + " has a non-finite normal");
         if (x == 0 && y == 0 && z == 0) {
             q.shape.zero[i] = 1;
             continue;
@@ -95,7 +95,7 @@ Quantized texCoordsOf(const std::vector<float>& uv, AttributeLayout layout, int 
         for (int k = 0; k < 2; ++k) {
             const double x = uv[2 * i + k];
             if (!std::isfinite(x))
-                throw Error((perCorner ? cornerName(i) : "vertex " + std::to_string(i)) +
+                throw Error(ErrorKind::InvalidInput, (perCorner ? cornerName(i) : "vertex " + std::to_string(i)) +
                             " has a non-finite texture coordinate");
             if (i == 0 || x < lo[k]) lo[k] = x;
             if (i == 0 || x > hi[k]) hi[k] = x;
@@ -112,7 +112,7 @@ Quantized texCoordsOf(const std::vector<float>& uv, AttributeLayout layout, int 
             const uint32_t v = uint32_t(std::min(std::max(t, 0.0), top));
             q.shape.values[2 * i + k] = v;
             if (!std::isfinite(float(lo[k] + double(v) * q.shape.uvStep)))
-                throw Error("the texture coordinates span more than a float can hold (" +
+                throw Error(ErrorKind::InvalidInput, "the texture coordinates span more than a float can hold (" +
                             (perCorner ? cornerName(i) : "vertex " + std::to_string(i)) + ")");
         }
     return q;
@@ -205,7 +205,7 @@ std::string decodeText(const uint8_t* data, size_t size, size_t length) {
         text[i] = char(b);
         context = byteClass(b);
     }
-    if (coder.bytesPastEnd() > 0) throw Error("corrupt file: a name section ends before its last byte");
+    if (coder.bytesPastEnd() > 0) throw Error(ErrorKind::Corrupt, "corrupt file: a name section ends before its last byte");
     return text;
 }
 
@@ -235,10 +235,10 @@ std::vector<std::string> readStrings(ByteReader& in) {
         total += n;
     }
     const uint8_t mode = in.u8("text coding");
-    if (mode != kTextRaw && mode != kTextCoded) throw Error("corrupt file: unknown text coding " + std::to_string(mode));
+    if (mode != kTextRaw && mode != kTextCoded) throw Error(ErrorKind::Corrupt, "corrupt file: unknown text coding " + std::to_string(mode));
     const size_t payload = in.remaining();
     if (mode == kTextRaw ? total != payload : total > kMaxTextRatio * payload + kTextSlack)
-        throw Error("corrupt file: a name section's lengths do not fit its bytes");
+        throw Error(ErrorKind::Corrupt, "corrupt file: a name section's lengths do not fit its bytes");
     const uint8_t* bytes = in.bytes(payload, "text");
     const std::string text = mode == kTextRaw ? std::string(reinterpret_cast<const char*>(bytes), payload)
                                               : decodeText(bytes, payload, size_t(total));
@@ -300,12 +300,12 @@ void checkAttributes(const Mesh& m, const EncodeOptions& options) {
     checkSize(m.faceMaterial.size(), 1, F, "faceMaterial", "face");
     checkSize(m.faceTexture.size(), 1, F, "faceTexture", "face");
     if (options.normalBits < kMinNormalBits || options.normalBits > kMaxNormalBits)
-        throw Error("normal bits must be between " + std::to_string(kMinNormalBits) + " and " +
+        throw Error(ErrorKind::InvalidInput, "normal bits must be between " + std::to_string(kMinNormalBits) + " and " +
                     std::to_string(kMaxNormalBits) + ", not " + std::to_string(options.normalBits));
     if (options.uvBits < kMinUvBits || options.uvBits > kMaxUvBits)
-        throw Error("texture coordinate bits must be between " + std::to_string(kMinUvBits) + " and " +
+        throw Error(ErrorKind::InvalidInput, "texture coordinate bits must be between " + std::to_string(kMinUvBits) + " and " +
                     std::to_string(kMaxUvBits) + ", not " + std::to_string(options.uvBits));
-    if (options.attributes & ~kAttrAll) throw Error("unknown attribute bits " + std::to_string(options.attributes));
+    if (options.attributes & ~kAttrAll) throw Error(ErrorKind::InvalidInput, "unknown attribute bits " + std::to_string(options.attributes));
 }
 
 bool shouldWeld(const Mesh& mesh, const std::vector<int32_t>& quantized, const EncodeOptions& options) {
@@ -431,7 +431,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
     uint32_t seen = 0;
     for (size_t s = 0; s < parts.attributes.size(); ++s) {
         const FileParts::Payload& p = parts.attributes[s];
-        if (p.size == 0) throw Error("corrupt file: attribute section " + std::to_string(s) + " is empty");
+        if (p.size == 0) throw Error(ErrorKind::Corrupt, "corrupt file: attribute section " + std::to_string(s) + " is empty");
         const uint8_t kind = p.data[0];
         if (kind >= kMaterialNames) {
             ByteReader in(p.data, p.size, "name section");
@@ -440,10 +440,10 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
             else if (kind == kTextureNames) m.textures = readStrings(in);
             else if (kind == kMetadata) {
                 const std::vector<std::string> pairs = readStrings(in);
-                if (pairs.size() % 2) throw Error("corrupt file: the metadata section holds an odd number of strings");
+                if (pairs.size() % 2) throw Error(ErrorKind::Corrupt, "corrupt file: the metadata section holds an odd number of strings");
                 for (size_t i = 0; i < pairs.size(); i += 2) m.metadata.emplace_back(pairs[i], pairs[i + 1]);
             } else {
-                throw Error("unsupported file: unknown attribute section kind " + std::to_string(kind));
+                throw Error(ErrorKind::Unsupported, "unsupported file: unknown attribute section kind " + std::to_string(kind));
             }
             result.stats.attributeSizes.push_back(
                 {kind == kMaterialNames ? "materials" : kind == kTextureNames ? "textures" : "metadata", p.size});
@@ -461,7 +461,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
                                     : a.semantic == AttributeSemantic::TexCoord ? (a.layout == AttributeLayout::Corner ? 4 : 2)
                                     : a.semantic == AttributeSemantic::Quality ? (a.layout == AttributeLayout::Face ? 7 : 3)
                                     : a.semantic == AttributeSemantic::Material ? 8 : 9);
-        if (seen & bit) throw Error("corrupt file: two " + name + " sections");
+        if (seen & bit) throw Error(ErrorKind::Corrupt, "corrupt file: two " + name + " sections");
         seen |= bit;
         const bool faceSemantic = a.semantic == AttributeSemantic::Material || a.semantic == AttributeSemantic::Texture;
         if ((a.layout == AttributeLayout::Face) != (faceSemantic || bit == kAttrFaceColors || bit == kAttrFaceQuality) ||
@@ -473,7 +473,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
             (a.semantic != AttributeSemantic::Color && a.semantic != AttributeSemantic::Normal &&
              a.semantic != AttributeSemantic::TexCoord && (a.components != 1 || a.bits != 32)) ||
             (a.semantic == AttributeSemantic::Color && a.components < 3))
-            throw Error("corrupt file: the " + name + " section's layout does not fit its kind");
+            throw Error(ErrorKind::Corrupt, "corrupt file: the " + name + " section's layout does not fit its kind");
         if (a.layout == AttributeLayout::WeldedVertex) welded.push_back(a);
         // Values to arrays (per element of the layout; welded ones are
         // scattered to vertices after the split below).
@@ -504,7 +504,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
                 out.resize(2 * n);
                 for (size_t e = 0; e < 2 * n; ++e) {
                     out[e] = float(a.uvOrigin[e % 2] + double(a.values[e]) * a.uvStep);
-                    if (!std::isfinite(out[e])) throw Error("corrupt file: a texture coordinate is not a finite float");
+                    if (!std::isfinite(out[e])) throw Error(ErrorKind::Corrupt, "corrupt file: a texture coordinate is not a finite float");
                 }
                 break;
             }
@@ -560,7 +560,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
                     for (int k = 0; k < 2; ++k) {
                         m.texCoords[2 * v + k] = float(a.uvOrigin[k] + double(a.values[2 * elementOf(v) + k]) * a.uvStep);
                         if (!std::isfinite(m.texCoords[2 * v + k]))
-                            throw Error("corrupt file: a texture coordinate is not a finite float");
+                            throw Error(ErrorKind::Corrupt, "corrupt file: a texture coordinate is not a finite float");
                     }
                 break;
             case AttributeSemantic::Quality:
@@ -572,6 +572,18 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
     }
     m.triangles.swap(triangles);
     result.quantized.swap(quantized);
+}
+
+std::string attributeSectionName(const uint8_t* data, size_t size) {
+    if (size == 0) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section is empty");
+    const uint8_t kind = data[0];
+    if (kind == kMaterialNames) return "materials";
+    if (kind == kTextureNames) return "textures";
+    if (kind == kMetadata) return "metadata";
+    if (kind < uint8_t(AttributeSemantic::Color) || kind > uint8_t(AttributeSemantic::Texture))
+        throw Error(ErrorKind::Unsupported, "unsupported file: unknown attribute kind " + std::to_string(kind));
+    if (size < 2) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section ends inside its header");
+    return sectionName(AttributeSemantic(kind), AttributeLayout(data[1]));
 }
 
 }  // namespace drm

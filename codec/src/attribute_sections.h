@@ -57,6 +57,11 @@ AttributeEncoding encodeAttributeSections(const Mesh& input, const EncodeOptions
 // vertices; fills result.stats.attributeSizes.
 void decodeAttributeSections(const FileParts& parts, Decoded& result);
 
+// The name an attribute section is listed under in Stats::attributeSizes
+// ("normals", "materials", ...), read from its first bytes without decoding
+// it; throws Error on a section decode would refuse by its kind.
+std::string attributeSectionName(const uint8_t* data, size_t size);
+
 }  // namespace drm
 
 #endif  // DRM_ATTRIBUTE_SECTIONS_H

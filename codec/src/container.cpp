@@ -46,13 +46,13 @@ ByteReader::ByteReader(const uint8_t* data, size_t size, std::string what, size_
 void ByteReader::require(size_t n, const char* field) const {
     if (n <= remaining()) return;
     const size_t missing = n - remaining();
-    throw Error("truncated file: " + what_ + " field \"" + field + "\" needs " +
+    throw Error(ErrorKind::Corrupt, "truncated file: " + what_ + " field \"" + field + "\" needs " +
                 std::to_string(missing) + " more byte" + (missing == 1 ? "" : "s") +
                 " at offset " + std::to_string(baseOffset_ + pos_));
 }
 
 void ByteReader::corrupt(const char* field, const std::string& problem, size_t at) const {
-    throw Error("corrupt file: " + what_ + " field \"" + field + "\" " + problem + " at offset " +
+    throw Error(ErrorKind::Corrupt, "corrupt file: " + what_ + " field \"" + field + "\" " + problem + " at offset " +
                 std::to_string(baseOffset_ + at));
 }
 

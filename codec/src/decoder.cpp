@@ -77,20 +77,20 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
     for (size_t c = 0; c < components; ++c) {
         const uint32_t* start = &header.startTriangles[3 * c];
         if (traversal.triangleCount() >= faceCount)
-            throw Error("corrupt file: more components than the header's " + std::to_string(faceCount) + " faces");
+            throw Error(ErrorKind::Corrupt, "corrupt file: more components than the header's " + std::to_string(faceCount) + " faces");
         try {
             traversal.startComponent(start[0], start[1], start[2]);
             result.faceRank.push_back(0);
         } catch (const Error& e) {
-            throw Error("corrupt file: component " + std::to_string(c) + ": " + e.what());
+            throw Error(ErrorKind::Corrupt, "corrupt file: component " + std::to_string(c) + ": " + e.what());
         }
         OpenEdge edge;
         while (traversal.popOpenEdge(edge)) {
             const uint32_t rank = coder.get(model.forecast(edge).context);
             if (coder.bytesPastEnd() > 0)
-                throw Error("corrupt file: the connectivity section ends before the last face");
+                throw Error(ErrorKind::Corrupt, "corrupt file: the connectivity section ends before the last face");
             if (rank >= stats.rankHistogram.size()) {
-                if (rank > traversalVertices) throw Error("corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
+                if (rank > traversalVertices) throw Error(ErrorKind::Corrupt, "corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
                 stats.rankHistogram.resize(size_t(rank) + 1, 0);
             }
             ++stats.rankHistogram[rank];
@@ -99,7 +99,7 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
                 continue;
             }
             if (traversal.triangleCount() >= faceCount)
-                throw Error("corrupt file: the connectivity section describes more than the header's " +
+                throw Error(ErrorKind::Corrupt, "corrupt file: the connectivity section describes more than the header's " +
                             std::to_string(faceCount) + " faces");
             try {
                 const uint32_t apex = model.vertexOfRank(rank, edge);
@@ -107,13 +107,13 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
                 traversal.attachApex(edge, apex);
                 result.faceRank.push_back(rank);
             } catch (const Error& e) {
-                throw Error("corrupt file: face " + std::to_string(traversal.triangleCount()) + ": " + e.what());
+                throw Error(ErrorKind::Corrupt, "corrupt file: face " + std::to_string(traversal.triangleCount()) + ": " + e.what());
             }
             progress.tick(0.05 + 0.9 * double(traversal.triangleCount()) / double(faceCount));
         }
     }
     if (traversal.triangleCount() != faceCount)
-        throw Error("corrupt file: decoded " + std::to_string(traversal.triangleCount()) + " faces, the header says " +
+        throw Error(ErrorKind::Corrupt, "corrupt file: decoded " + std::to_string(traversal.triangleCount()) + " faces, the header says " +
                     std::to_string(faceCount));
 
     result.mesh.triangles = traversal.triangles();
@@ -154,7 +154,7 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
     }
     size_t badVertex = 0;
     if (!dequantize(result.quantized, header.grid, result.mesh.positions, &badVertex))
-        throw Error("corrupt file: vertex " + std::to_string(badVertex) +
+        throw Error(ErrorKind::Corrupt, "corrupt file: vertex " + std::to_string(badVertex) +
                     " lies outside the range of single-precision floats");
 
     stats.vertices = result.mesh.vertexCount();  // the file's vertices, or the split ones of a welded mesh

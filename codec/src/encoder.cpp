@@ -115,7 +115,7 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
                 traversal.closeAsBoundary(edge);
             } else {
                 if (!model.admissible(apex, edge))
-                    throw Error("internal error: the apex of face " + std::to_string(face) +
+                    throw Error(ErrorKind::Internal, "internal error: the apex of face " + std::to_string(face) +
                                 " is not a candidate; the file would not decode");
                 rank = model.rankOf(apex, edge);
                 model.resolved(apex);
@@ -262,10 +262,11 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
     prepared.renumbered.triangles.resize(cut.triangles.size());
     for (size_t c = 0; c < cut.triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[cut.triangles[c]];
     prepared.renumbered.positions.resize(prepared.decodedGrid.size());  // only its size matters to the checks
-    try {
-        prepared.topology = checkMesh(prepared.renumbered);
-    } catch (const Error& e) {
-        throw Error(std::string("internal error: the mesh cut into manifold pieces is still not codable: ") + e.what());
+    {
+        checkIndices(prepared.renumbered);
+        const std::string problem = topologyProblem(prepared.renumbered, &prepared.topology);
+        if (!problem.empty())
+            throw Error(ErrorKind::Internal, "internal error: the mesh cut into manifold pieces is still not codable: " + problem);
     }
 
     prepared.predictor = options.predictor;
@@ -299,7 +300,7 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
         std::vector<float> decodedPositions;
         size_t badVertex = 0;
         if (!dequantize(prepared.quantized, prepared.grid, decodedPositions, &badVertex))
-            throw Error("vertex " + std::to_string(badVertex) +
+            throw Error(ErrorKind::InvalidInput, "vertex " + std::to_string(badVertex) +
                         " would decode outside the range of single-precision floats; scale the mesh down");
     }
     progress.stage("checking mesh", 0.0);
@@ -307,12 +308,8 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // A mesh the traversal can take as it is needs no cut (the common case,
     // and the cheap test); any other is cut into manifold pieces.
     ManifoldCut cut;
-    bool needsCut = false;
-    try {
-        checkMesh(mesh);
-    } catch (const Error&) {
-        needsCut = true;
-    }
+    MeshTopology asGiven;
+    const bool needsCut = !topologyProblem(mesh, &asGiven).empty();
     if (needsCut) {
         progress.stage("cutting into manifold pieces", 0.005);
         cut = cutIntoManifold(mesh.triangles, mesh.vertexCount());
@@ -331,13 +328,13 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
 
     if (options.geometry != GeometryCoder::SpanningTree && options.geometry != GeometryCoder::Raw &&
         options.geometry != GeometryCoder::Refine)
-        throw Error("unknown geometry coder " + std::to_string(int(options.geometry)));
+        throw Error(ErrorKind::InvalidInput, "unknown geometry coder " + std::to_string(int(options.geometry)));
     if (options.predictor != Predictor::Auto && options.predictor != Predictor::Parallelogram &&
         options.predictor != Predictor::Midpoint)
-        throw Error("unknown predictor " + std::to_string(int(options.predictor)));
+        throw Error(ErrorKind::InvalidInput, "unknown predictor " + std::to_string(int(options.predictor)));
     if (options.geometry == GeometryCoder::Refine &&
         (options.refineBits < 0 || options.refineBits > std::min(kMaxRefineBits, options.bits - 1)))
-        throw Error("refinement bits " + std::to_string(options.refineBits) + " out of range 0.." +
+        throw Error(ErrorKind::InvalidInput, "refinement bits " + std::to_string(options.refineBits) + " out of range 0.." +
                     std::to_string(std::min(kMaxRefineBits, options.bits - 1)) + " at " +
                     std::to_string(options.bits) + " bits");
     if (options.geometry != GeometryCoder::Refine || options.refineBits > 0) {

@@ -33,12 +33,12 @@ std::vector<Keyed> keyed(const std::vector<uint32_t>& t) {
 
 void matchFaces(const std::vector<uint32_t>& input, const std::vector<uint32_t>& decoded,
                 std::vector<uint32_t>& faceOrder, std::vector<uint8_t>& rotation) {
-    if (input.size() != decoded.size()) throw Error("internal error: the decoded faces are not the input's");
+    if (input.size() != decoded.size()) throw Error(ErrorKind::Internal, "internal error: the decoded faces are not the input's");
     const std::vector<Keyed> a = keyed(input), b = keyed(decoded);
     faceOrder.assign(b.size(), 0);
     rotation.assign(b.size(), 0);
     for (size_t i = 0; i < a.size(); ++i) {
-        if (a[i].key != b[i].key) throw Error("internal error: the decoded faces are not the input's");
+        if (a[i].key != b[i].key) throw Error(ErrorKind::Internal, "internal error: the decoded faces are not the input's");
         // decoded corner (b.shift + j) = input corner (a.shift + j), so decoded corner k is input corner
         // k - b.shift + a.shift.
         faceOrder[b[i].face] = a[i].face;

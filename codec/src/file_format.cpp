@@ -12,6 +12,11 @@
 namespace drm {
 namespace {
 
+// "1", or "1 to 3" once the reader knows several versions.
+std::string versionRange() {
+    if (kOldestReadableFormatVersion == kNewestReadableFormatVersion) return std::to_string(kNewestReadableFormatVersion);
+    return std::to_string(kOldestReadableFormatVersion) + " to " + std::to_string(kNewestReadableFormatVersion);
+}
 
 void writeSection(ByteWriter& out, const std::vector<uint8_t>& payload) {
     out.varint(payload.size());
@@ -44,7 +49,7 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
 FileHeader decodeHeader(ByteReader& in) {
     FileHeader h;
     const uint16_t flags = in.u16("flags");
-    if (flags & ~kKnownFlags) throw Error("corrupt file: unknown header flags " + std::to_string(flags));
+    if (flags & ~kKnownFlags) throw Error(ErrorKind::Corrupt, "corrupt file: unknown header flags " + std::to_string(flags));
     h.curvature = (flags & kFlagCurvature) != 0;
     h.levers.topologicalFilter = (flags & kFlagTopologicalFilter) != 0;
     h.levers.gapClosing = (flags & kFlagGapClosing) != 0;
@@ -54,18 +59,18 @@ FileHeader decodeHeader(ByteReader& in) {
     h.hasRepairs = (flags & kFlagRepairs) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
-        throw Error("corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");
+        throw Error(ErrorKind::Corrupt, "corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");
     const uint8_t predictor = in.u8("predictor");
     if (predictor != uint8_t(Predictor::Parallelogram) && predictor != uint8_t(Predictor::Midpoint))
-        throw Error("corrupt file: unknown predictor " + std::to_string(predictor));
+        throw Error(ErrorKind::Corrupt, "corrupt file: unknown predictor " + std::to_string(predictor));
     h.predictor = Predictor(predictor);
     const uint8_t connectivity = in.u8("connectivity coder");
     if (connectivity != uint8_t(ConnectivityCoder::RankRangeCoder))
-        throw Error("unsupported file: unknown connectivity coder " + std::to_string(connectivity));
+        throw Error(ErrorKind::Unsupported, "unsupported file: unknown connectivity coder " + std::to_string(connectivity));
     const uint8_t geometry = in.u8("geometry coder");
     if (geometry != uint8_t(GeometryCoder::Raw) && geometry != uint8_t(GeometryCoder::SpanningTree) &&
         geometry != uint8_t(GeometryCoder::Refine))
-        throw Error("unsupported file: unknown geometry coder " + std::to_string(geometry));
+        throw Error(ErrorKind::Unsupported, "unsupported file: unknown geometry coder " + std::to_string(geometry));
     h.geometryCoder = GeometryCoder(geometry);
     for (double& o : h.grid.origin) o = in.f64("bounding box origin");
     h.grid.step = in.f64("grid step");
@@ -73,16 +78,16 @@ FileHeader decodeHeader(ByteReader& in) {
     // as wide as float's range holds (-2e38 .. 2e38 has an extent of 4e38),
     // and only a grid point past FLT_MAX is refused.
     const std::string gridFault = gridProblem(h.grid);
-    if (!gridFault.empty()) throw Error("corrupt file: " + gridFault);
+    if (!gridFault.empty()) throw Error(ErrorKind::Corrupt, "corrupt file: " + gridFault);
     h.vertexCount = in.count("vertex count", kMaxVertexCount);
-    if (h.vertexCount == 0) throw Error("corrupt file: the vertex count is zero");
+    if (h.vertexCount == 0) throw Error(ErrorKind::Corrupt, "corrupt file: the vertex count is zero");
     h.faceCount = in.count("face count", kMaxFaceCount);
     // A cut makes at most one copy per face corner.
     if (h.hasRepairs)
         h.copyCount = in.count("vertex copy count", std::min<uint64_t>(3 * h.faceCount, kMaxVertexCount - h.vertexCount));
     if (flags & kFlagAttributes) {
         h.attributeSections = in.count("attribute section count", kMaxAttributeSections);
-        if (h.attributeSections == 0) throw Error("corrupt file: the attribute flag is set with no attribute section");
+        if (h.attributeSections == 0) throw Error(ErrorKind::Corrupt, "corrupt file: the attribute flag is set with no attribute section");
     }
     // Every start vertex takes at least one byte: the count is bounded by
     // what is left before anything is allocated.
@@ -90,9 +95,9 @@ FileHeader decodeHeader(ByteReader& in) {
     h.startTriangles.resize(size_t(components) * 3);
     for (uint32_t& v : h.startTriangles) v = uint32_t(in.count("start triangle vertex", h.vertexCount + h.copyCount - 1));
     if (in.remaining() != 0)
-        throw Error("corrupt file: " + std::to_string(in.remaining()) + " unexpected bytes at the end of the header");
+        throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(in.remaining()) + " unexpected bytes at the end of the header");
     const std::string problem = headerProblem(h);
-    if (!problem.empty()) throw Error("corrupt file: the header holds " + problem);
+    if (!problem.empty()) throw Error(ErrorKind::Corrupt, "corrupt file: the header holds " + problem);
     return h;
 }
 
@@ -132,7 +137,7 @@ std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8
     withCount.attributeSections = attributes.size();
     // Never a file the reader refuses: the reader's own test of the header.
     const std::string problem = headerProblem(withCount);
-    if (!problem.empty()) throw Error("cannot encode this mesh: the file would hold " + problem);
+    if (!problem.empty()) throw Error(ErrorKind::InvalidInput, "cannot encode this mesh: the file would hold " + problem);
     ByteWriter out;
     out.bytes(kSignature, sizeof kSignature);
     out.u16(kFormatVersion);
@@ -150,15 +155,15 @@ std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8
 }
 
 FileParts readFile(const uint8_t* data, size_t size) {
-    if (size == 0) throw Error("empty file: not a .drm file");
+    if (size == 0) throw Error(ErrorKind::Corrupt, "empty file: not a .drm file");
     if (size < sizeof kSignature || std::memcmp(data, kSignature, sizeof kSignature) != 0)
-        throw Error("not a .drm file: the signature is missing");
+        throw Error(ErrorKind::Corrupt, "not a .drm file: the signature is missing");
     ByteReader file(data, size, "file");
     file.bytes(sizeof kSignature, "signature");
     const uint16_t version = file.u16("format version");
-    if (version != kFormatVersion)
-        throw Error("unsupported .drm format version " + std::to_string(version) + ": this reader knows version " +
-                    std::to_string(kFormatVersion));
+    if (version < kOldestReadableFormatVersion || version > kNewestReadableFormatVersion)
+        throw Error(ErrorKind::Unsupported, "unsupported .drm format version " + std::to_string(version) + ": this reader knows version " +
+                    versionRange());
 
     // Each section: length, CRC-32, payload. The header comes first, and
     // says whether the optional sections (vertex order, repairs) follow.
@@ -168,10 +173,11 @@ FileParts readFile(const uint8_t* data, size_t size) {
         const size_t offset = file.offset();
         *payload = file.bytes(*payloadSize, (name + " section").c_str());
         if (crc32(*payload, *payloadSize) != stored)
-            throw Error("corrupt file: the " + name + " section (offset " + std::to_string(offset) +
+            throw Error(ErrorKind::Corrupt, "corrupt file: the " + name + " section (offset " + std::to_string(offset) +
                         ") fails its checksum");
     };
     FileParts parts;
+    parts.formatVersion = version;
     const uint8_t* headerPayload = nullptr;
     size_t headerSize = 0;
     section("header", &headerPayload, &headerSize);
@@ -189,7 +195,7 @@ FileParts readFile(const uint8_t* data, size_t size) {
     }
     parts.attributeBytes = file.offset() - beforeAttributes;
     if (file.remaining() != 0)
-        throw Error("corrupt file: " + std::to_string(file.remaining()) + " unexpected bytes after the last section");
+        throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(file.remaining()) + " unexpected bytes after the last section");
     parts.headerBytes = size - parts.connectivitySize - parts.geometrySize - parts.vertexOrderSize - parts.repairsSize -
                         parts.attributeBytes;
     return parts;

@@ -13,7 +13,7 @@
 namespace drm {
 
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
-constexpr uint16_t kFormatVersion = 1;
+constexpr uint16_t kFormatVersion = kFileFormatVersion;  // written; read: drm.h's readable range
 
 enum class ConnectivityCoder : uint8_t { RankRangeCoder = 1 };
 
@@ -48,6 +48,7 @@ struct FileHeader {
 };
 
 struct FileParts {
+    int formatVersion = 0;  // as read, within drm.h's readable range
     FileHeader header;
     const uint8_t* connectivity = nullptr;
     size_t connectivitySize = 0;

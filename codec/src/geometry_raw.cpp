@@ -27,7 +27,7 @@ std::vector<uint8_t> packGrid(const std::vector<int32_t>& grid, int bits) {
 std::vector<int32_t> unpackGrid(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
     const uint64_t needed = (vertexCount * 3 * uint64_t(bits) + 7) / 8;
     if (needed != size)
-        throw Error("corrupt file: the geometry section has " + std::to_string(size) + " bytes, but " +
+        throw Error(ErrorKind::Corrupt, "corrupt file: the geometry section has " + std::to_string(size) + " bytes, but " +
                     std::to_string(vertexCount) + " vertices at " + std::to_string(bits) + " bits need " +
                     std::to_string(needed));
     std::vector<int32_t> grid(size_t(vertexCount) * 3);

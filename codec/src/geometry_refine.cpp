@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "common.h"
 #include "container.h"
 #include "drm/drm.h"
 #include "range_coder.h"
@@ -22,11 +23,6 @@ constexpr int kActivities = 7;   // no refined neighbour, then 6 buckets of thei
 constexpr int kAxisClasses = 4;  // first axis; earlier axes' symbols summed 0, 1, 2+
 constexpr int kContexts = kKinds * kActivities * kAxisClasses * 2;
 
-int bitLength(uint64_t m) {
-    int n = 0;
-    for (; m != 0; m >>= 1) ++n;
-    return n;
-}
 
 int64_t floorDiv(int64_t a, int64_t b) {  // b > 0
     const int64_t q = a / b;
@@ -55,7 +51,7 @@ public:
         // vertices of no triangle in index order.
         const size_t faces = triangles.size() / 3;
         for (uint32_t v : triangles)
-            if (v >= n_) throw Error("internal error: a refinement triangle names vertex " + std::to_string(v));
+            if (v >= n_) throw Error(ErrorKind::Internal, "internal error: a refinement triangle names vertex " + std::to_string(v));
         first_.assign(n_ + 1, 0);
         for (uint32_t v : triangles) ++first_[v + 1];
         for (size_t v = 0; v < n_; ++v) first_[v + 1] += first_[v];
@@ -269,11 +265,11 @@ RefinePayload readRefinePayload(const uint8_t* data, size_t size, int bits) {
     p.lowBits = in.u8("refinement bits");
     const int most = std::min(kMaxRefineBits, bits - 1);
     if (p.lowBits < 1 || p.lowBits > most)
-        throw Error("corrupt file: " + std::to_string(p.lowBits) + " refinement bits at " + std::to_string(bits) +
+        throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(p.lowBits) + " refinement bits at " + std::to_string(bits) +
                     "-bit quantization (allowed: 1 to " + std::to_string(most) + ")");
     const uint8_t predictor = in.u8("refinement predictor");
     if (predictor >= kRefinePredictors)
-        throw Error("corrupt file: unknown refinement predictor " + std::to_string(predictor));
+        throw Error(ErrorKind::Corrupt, "corrupt file: unknown refinement predictor " + std::to_string(predictor));
     p.predictor = RefinePredictor(predictor);
     p.treeSize = size_t(in.count("coarse tree size", in.remaining()));
     p.tree = in.bytes(p.treeSize, "coarse tree");
@@ -331,7 +327,7 @@ std::vector<int32_t> decodeRefinement(const RefinePayload& payload, const std::v
         }
         refiner.settle(v, at);
         if (coder.bytesPastEnd() > 0)
-            throw Error("corrupt file: the refinement section ends before vertex " + std::to_string(v));
+            throw Error(ErrorKind::Corrupt, "corrupt file: the refinement section ends before vertex " + std::to_string(v));
     }
     return fine;
 }

@@ -4,7 +4,7 @@
 #include <array>
 
 #include "drm/drm.h"
-#include "corner_sets.h"
+#include "common.h"
 #include "halfedge_map.h"
 
 namespace drm {
@@ -91,7 +91,7 @@ std::vector<uint8_t> orient(Joins& joins, size_t faceCount) {
 // Returns the new vertex of every corner; fills copyOf.
 std::vector<uint32_t> numberFans(const std::vector<uint32_t>& t, const Joins& joins, size_t vertexCount,
                                  std::vector<uint32_t>& copyOf) {
-    CornerSets fans(t.size());
+    UnionFind fans(t.size());
     for (uint32_t s = 0; s < t.size(); ++s) {
         const uint32_t p = joins.partner[s];
         if (p == kNone || p < s) continue;
@@ -117,7 +117,7 @@ std::vector<uint32_t> numberFans(const std::vector<uint32_t>& t, const Joins& jo
                 vertexOfFan[fan] = v;
             } else {
                 if (vertexCount + copyOf.size() >= kNone)
-                    throw Error("the mesh is too large to cut into manifold pieces: over 2^32-2 vertices");
+                    throw Error(ErrorKind::InvalidInput, "the mesh is too large to cut into manifold pieces: over 2^32-2 vertices");
                 vertexOfFan[fan] = uint32_t(vertexCount + copyOf.size());
                 copyOf.push_back(v);
             }
@@ -217,7 +217,7 @@ ManifoldCut cutIntoManifold(const std::vector<uint32_t>& triangles, size_t verte
                 directed.insert(cut.triangles[3 * f + k], cut.triangles[3 * f + (k + 1) % 3], f);
         }
         if (!detached) break;
-        if (pass > 2) throw Error("internal error: cutting the mesh into manifold pieces did not converge");
+        if (pass > 2) throw Error(ErrorKind::Internal, "internal error: cutting the mesh into manifold pieces did not converge");
     }
     return cut;
 }

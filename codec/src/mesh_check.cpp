@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "corner_sets.h"
+#include "common.h"
 
 namespace drm {
 namespace {
@@ -28,27 +28,34 @@ void checkIndices(const Mesh& mesh) {
     const std::vector<uint32_t>& t = mesh.triangles;
     const size_t vertexCount = mesh.vertexCount();
     const size_t faceCount = mesh.faceCount();
-    if (t.size() % 3 != 0) throw Error("the triangle array does not hold whole index triples");
+    if (t.size() % 3 != 0) throw Error(ErrorKind::InvalidInput, "the triangle array does not hold whole index triples");
     if (vertexCount >= 0xFFFFFFFFu || faceCount >= 0x55555555u)
-        throw Error("the mesh is too large: at most 2^32-2 vertices and 1431655764 faces are supported");
+        throw Error(ErrorKind::InvalidInput, "the mesh is too large: at most 2^32-2 vertices and 1431655764 faces are supported");
     for (size_t f = 0; f < faceCount; ++f)
         for (int k = 0; k < 3; ++k)
             if (t[3 * f + k] >= vertexCount)
-                throw Error(faceText(t, f) + " refers to vertex " + std::to_string(t[3 * f + k]) +
+                throw Error(ErrorKind::InvalidInput, faceText(t, f) + " refers to vertex " + std::to_string(t[3 * f + k]) +
                             ", but the mesh has only " + std::to_string(vertexCount) + " vertices");
 }
 
 MeshTopology checkMesh(const Mesh& mesh) {
     checkIndices(mesh);
+    MeshTopology topology;
+    const std::string problem = topologyProblem(mesh, &topology);
+    if (!problem.empty()) throw Error(ErrorKind::InvalidInput, problem);
+    return topology;
+}
+
+std::string topologyProblem(const Mesh& mesh, MeshTopology* out) {
     const std::vector<uint32_t>& t = mesh.triangles;
     const size_t vertexCount = mesh.vertexCount();
     const size_t faceCount = mesh.faceCount();
     for (size_t f = 0; f < faceCount; ++f) {
         if (t[3 * f] == t[3 * f + 1] || t[3 * f + 1] == t[3 * f + 2] || t[3 * f] == t[3 * f + 2])
-            throw Error(faceText(t, f) + " repeats a vertex index; such degenerate faces are not supported");
+            return (faceText(t, f) + " repeats a vertex index; such degenerate faces are not supported");
     }
 
-    MeshTopology topology;
+    MeshTopology& topology = *out;
     topology.triangles = &t;
     topology.faceOfHalfEdge.reset(t.size());
     for (size_t f = 0; f < faceCount; ++f) {
@@ -56,7 +63,7 @@ MeshTopology checkMesh(const Mesh& mesh) {
             const uint32_t a = t[3 * f + k], b = t[3 * f + (k + 1) % 3];
             if (!topology.faceOfHalfEdge.insert(a, b, uint32_t(f))) {
                 const uint32_t g = topology.faceOfHalfEdge.find(a, b);
-                throw Error(faceText(t, f) + " and " + faceText(t, g) + " both contain the directed edge " +
+                return (faceText(t, f) + " and " + faceText(t, g) + " both contain the directed edge " +
                             std::to_string(a) + "->" + std::to_string(b) +
                             ": the mesh is non-manifold or inconsistently oriented there");
             }
@@ -66,7 +73,7 @@ MeshTopology checkMesh(const Mesh& mesh) {
     // Corners (f, k) around one vertex are joined when their faces share an
     // edge at that vertex; a vertex whose corners fall into two or more sets
     // is the apex of two fans (a "bowtie"), which the traversal cannot handle.
-    CornerSets sets(t.size());
+    UnionFind sets(t.size());
     for (size_t f = 0; f < faceCount; ++f) {
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = t[3 * f + k], next = t[3 * f + (k + 1) % 3];
@@ -81,11 +88,11 @@ MeshTopology checkMesh(const Mesh& mesh) {
         const uint32_t v = t[c], fan = sets.root(uint32_t(c));
         if (fanOf[v] == HalfEdgeMap::kAbsent) fanOf[v] = fan;
         else if (fanOf[v] != fan)
-            throw Error("vertex " + std::to_string(v) +
+            return ("vertex " + std::to_string(v) +
                         " is non-manifold: its faces form more than one fan (first seen at " + faceText(t, c / 3) +
                         ")");
     }
-    return topology;
+    return std::string();
 }
 
 }  // namespace drm

@@ -3,6 +3,8 @@
 #ifndef DRM_MESH_CHECK_H
 #define DRM_MESH_CHECK_H
 
+#include <string>
+
 #include "drm/drm.h"
 #include "halfedge_map.h"
 
@@ -27,6 +29,12 @@ void checkIndices(const Mesh& mesh);
 // non-manifold edge or neighbours with opposite orientation) or a vertex whose
 // faces form more than one fan (a non-manifold vertex).
 MeshTopology checkMesh(const Mesh& mesh);
+
+// The same test without throwing, for a caller that only needs the answer:
+// "" if the traversal can code the mesh as it is (*topology then holds its
+// directed-edge table), otherwise the message checkMesh would throw.
+// Indices must already be in range (checkIndices).
+std::string topologyProblem(const Mesh& mesh, MeshTopology* topology);
 
 }  // namespace drm
 

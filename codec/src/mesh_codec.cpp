@@ -74,7 +74,7 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     if (options.verify) {
         progress.stage("verifying", 0.98);
         const std::string mismatch = findMismatch(mesh, options, result);
-        if (!mismatch.empty()) throw Error("internal error: the file written does not decode to the input: " + mismatch);
+        if (!mismatch.empty()) throw Error(ErrorKind::Internal, "internal error: the file written does not decode to the input: " + mismatch);
     }
     progress.stage("done", 1.0);
     return result;

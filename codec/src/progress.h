@@ -22,7 +22,7 @@ public:
 
 private:
     void report(double fraction) {
-        if (callback_ && !callback_(fraction, stage_)) throw Error("cancelled");
+        if (callback_ && !callback_(fraction, stage_)) throw Error(ErrorKind::Cancelled, "cancelled");
     }
 
     const Progress& callback_;

@@ -11,16 +11,16 @@ namespace drm {
 
 Grid makeGrid(const std::vector<float>& positions, int bits) {
     if (bits < kMinBits || bits > kMaxBits)
-        throw Error("quantization bits must be between " + std::to_string(kMinBits) + " and " +
+        throw Error(ErrorKind::InvalidInput, "quantization bits must be between " + std::to_string(kMinBits) + " and " +
                     std::to_string(kMaxBits) + ", not " + std::to_string(bits));
-    if (positions.size() % 3 != 0) throw Error("the position array does not hold whole xyz triples");
-    if (positions.empty()) throw Error("empty mesh: there are no vertices to encode");
+    if (positions.size() % 3 != 0) throw Error(ErrorKind::InvalidInput, "the position array does not hold whole xyz triples");
+    if (positions.empty()) throw Error(ErrorKind::InvalidInput, "empty mesh: there are no vertices to encode");
     double lo[3], hi[3];
     for (int k = 0; k < 3; ++k) lo[k] = hi[k] = positions[size_t(k)];
     for (size_t i = 0; i < positions.size(); ++i) {
         const double x = positions[i];
         if (!std::isfinite(x))
-            throw Error("vertex " + std::to_string(i / 3) + " has a non-finite coordinate (" +
+            throw Error(ErrorKind::InvalidInput, "vertex " + std::to_string(i / 3) + " has a non-finite coordinate (" +
                         (std::isnan(x) ? std::string("NaN") : std::string("infinity")) + ")");
         lo[i % 3] = std::min(lo[i % 3], x);
         hi[i % 3] = std::max(hi[i % 3], x);
@@ -63,7 +63,7 @@ std::vector<int32_t> quantize(const std::vector<float>& positions, const Grid& g
     const double top = gridMax(grid.bits);
     for (size_t i = 0; i < positions.size(); ++i) {
         const double x = positions[i];
-        if (!std::isfinite(x)) throw Error("vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
+        if (!std::isfinite(x)) throw Error(ErrorKind::InvalidInput, "vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
         const double t = std::floor((x - grid.origin[i % 3]) / grid.step + 0.5);
         q[i] = int32_t(std::min(std::max(t, 0.0), top));
         // Near FLT_MAX the nearest grid point may lie past the float range

@@ -10,8 +10,8 @@
 
 namespace drm {
 
-constexpr int kMinBits = 1;
-constexpr int kMaxBits = 21;  // keeps squared fixed-point distances within int64
+constexpr int kMinBits = kMinQuantizationBits;  // drm.h
+constexpr int kMaxBits = kMaxQuantizationBits;
 
 inline int32_t gridMax(int bits) { return int32_t((int64_t(1) << bits) - 1); }
 

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "common.h"
 #include "drm/drm.h"
 
 namespace drm {
@@ -49,22 +50,17 @@ constexpr int kRankClasses = 3;
 
 int checkedExtraContexts(int extraContexts) {
     if (extraContexts < 1)
-        throw Error("internal error: the rank coder needs at least one context, not " +
+        throw Error(ErrorKind::Internal, "internal error: the rank coder needs at least one context, not " +
                     std::to_string(extraContexts));
     return extraContexts;
 }
 
 void checkExtraContext(int extraContext, int extraContexts) {
     if (extraContext < 0 || extraContext >= extraContexts)
-        throw Error("internal error: rank context " + std::to_string(extraContext) +
+        throw Error(ErrorKind::Internal, "internal error: rank context " + std::to_string(extraContext) +
                     " is outside [0, " + std::to_string(extraContexts) + ")");
 }
 
-int bitLength(uint64_t w) {
-    int n = 0;
-    for (; w != 0; w >>= 1) ++n;
-    return n;
-}
 
 }  // namespace
 
@@ -162,7 +158,7 @@ uint32_t RankDecoder::get(int extraContext) {
         const uint64_t w = (uint64_t(1) << (length - 1)) | coder_.decodeWideBits(length - 1);
         const uint64_t wide = w - 1 + kRankDirectSymbols;
         if (wide > UINT32_MAX)
-            throw Error("corrupt connectivity stream: an escaped rank does not fit in 32 bits");
+            throw Error(ErrorKind::Corrupt, "corrupt connectivity stream: an escaped rank does not fit in 32 bits");
         rank = uint32_t(wide);
     }
     previousClass_ = rankClass(rank);

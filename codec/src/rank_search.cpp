@@ -54,11 +54,11 @@ uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const Open
         --rank;
     }
     if (rank == 0 || rank > index_.presentCount())
-        throw Error("rank " + std::to_string(rank) + " is impossible: only " +
+        throw Error(ErrorKind::Corrupt, "rank " + std::to_string(rank) + " is impossible: only " +
                     std::to_string(index_.presentCount()) + " candidate vertices remain");
     const std::vector<RankedVertex>& order = nearest(p, rank, edge, preferred);
     if (order.size() < rank)
-        throw Error("rank " + std::to_string(rank) + " is impossible: only " + std::to_string(order.size()) +
+        throw Error(ErrorKind::Corrupt, "rank " + std::to_string(rank) + " is impossible: only " + std::to_string(order.size()) +
                     " admissible vertices remain for edge " + std::to_string(edge.vi) + "-" +
                     std::to_string(edge.vj));
     return order[rank - 1].second;

@@ -31,7 +31,7 @@ void putGamma(RangeEncoder& coder, uint64_t x) {
 uint64_t getGamma(RangeDecoder& coder) {
     int n = 0;
     while (coder.decodeBits(1) == 0)
-        if (++n > 33) throw Error("corrupt file: a vertex copy in the repairs section is out of range");
+        if (++n > 33) throw Error(ErrorKind::Corrupt, "corrupt file: a vertex copy in the repairs section is out of range");
     return (uint64_t(1) << n) | coder.decodeWideBits(n);
 }
 
@@ -74,16 +74,16 @@ std::vector<uint8_t> encodeRepairs(const Repairs& repairs, uint64_t vertexCount)
 RepairReader::RepairReader(const uint8_t* data, size_t size, uint64_t vertexCount, uint64_t copies,
                            uint64_t faceCount)
     : coder_(data, size), size_(size), bitsLeft_(8 * (uint64_t(size) + 3)) {  // finish() leaves off 3 zero bytes
-    if (copies > bitsLeft_) throw Error(tooMany(copies, "vertex copies", size));
+    if (copies > bitsLeft_) throw Error(ErrorKind::Corrupt, tooMany(copies, "vertex copies", size));
     bitsLeft_ -= copies;
     repairs_.copyOf.resize(size_t(copies));
     uint64_t previous = 0;
     for (uint32_t& v : repairs_.copyOf) {
         const uint64_t value = previous + getGamma(coder_) - 1;
         if (value >= vertexCount)
-            throw Error("corrupt file: the repairs section copies vertex " + std::to_string(value) + " of " +
+            throw Error(ErrorKind::Corrupt, "corrupt file: the repairs section copies vertex " + std::to_string(value) + " of " +
                         std::to_string(vertexCount));
-        if (coder_.bytesPastEnd() > 0) throw Error("corrupt file: the repairs section ends early");
+        if (coder_.bytesPastEnd() > 0) throw Error(ErrorKind::Corrupt, "corrupt file: the repairs section ends early");
         v = uint32_t(value);
         previous = value;
     }
@@ -91,24 +91,24 @@ RepairReader::RepairReader(const uint8_t* data, size_t size, uint64_t vertexCoun
     const int width = indexBits(vertexCount);
     const uint64_t loose = coder_.decodeWideBits(32);
     if (loose > faceCount)
-        throw Error("corrupt file: the repairs section claims " + std::to_string(loose) +
+        throw Error(ErrorKind::Corrupt, "corrupt file: the repairs section claims " + std::to_string(loose) +
                     " faces repeating a vertex, more than the header's " + std::to_string(faceCount) + " faces");
-    if (3 * loose * uint64_t(width) > bitsLeft_) throw Error(tooMany(loose, "faces repeating a vertex", size));
+    if (3 * loose * uint64_t(width) > bitsLeft_) throw Error(ErrorKind::Corrupt, tooMany(loose, "faces repeating a vertex", size));
     bitsLeft_ -= 3 * loose * uint64_t(width);
     repairs_.looseTriangles.resize(size_t(3 * loose));
     for (uint32_t& v : repairs_.looseTriangles) {
         v = uint32_t(coder_.decodeWideBits(width));
         if (v >= vertexCount)
-            throw Error("corrupt file: a face in the repairs section refers to vertex " + std::to_string(v) +
+            throw Error(ErrorKind::Corrupt, "corrupt file: a face in the repairs section refers to vertex " + std::to_string(v) +
                         " of " + std::to_string(vertexCount));
     }
 
     duplicates_ = coder_.decodeWideBits(32);
     if (duplicates_ > faceCount - loose)
-        throw Error("corrupt file: the repairs section claims " + std::to_string(duplicates_) +
+        throw Error(ErrorKind::Corrupt, "corrupt file: the repairs section claims " + std::to_string(duplicates_) +
                     " repeated faces, more than the header's faces leave room for");
-    if (2 * duplicates_ > bitsLeft_) throw Error(tooMany(duplicates_, "repeated faces", size));
-    if (coder_.bytesPastEnd() > 0) throw Error("corrupt file: the repairs section ends early");
+    if (2 * duplicates_ > bitsLeft_) throw Error(ErrorKind::Corrupt, tooMany(duplicates_, "repeated faces", size));
+    if (coder_.bytesPastEnd() > 0) throw Error(ErrorKind::Corrupt, "corrupt file: the repairs section ends early");
 }
 
 void RepairReader::readAfterTraversal(size_t faceCount) {
@@ -123,13 +123,13 @@ void RepairReader::readAfterTraversal(size_t faceCount) {
     for (size_t i = 0; i < duplicates_; ++i) {
         const uint64_t position = coder_.decodeWideBits(positionWidth);
         if (position >= faceCount)
-            throw Error("corrupt file: a repeated face in the repairs section repeats face " +
+            throw Error(ErrorKind::Corrupt, "corrupt file: a repeated face in the repairs section repeats face " +
                         std::to_string(position) + " of " + std::to_string(faceCount));
         repairs_.duplicateOf[i] = uint32_t(position);
         repairs_.duplicateReversed[i] = uint8_t(coder_.decodeBits(1));
     }
     if (coder_.bytesPastEnd() > 0)
-        throw Error("corrupt file: the repairs section (" + std::to_string(size_) + " bytes) ends early");
+        throw Error(ErrorKind::Corrupt, "corrupt file: the repairs section (" + std::to_string(size_) + " bytes) ends early");
 }
 
 void undoCut(std::vector<uint32_t>& t, const Repairs& r, size_t vertexCount) {

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "common.h"
 #include "drm/drm.h"
 #include "exact_math.h"
 
@@ -29,8 +30,6 @@ namespace drm {
 
 // (squared fixed-point distance, vertex), ordered as ranks are.
 using RankedVertex = std::pair<int64_t, uint32_t>;
-
-constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
 
 // Squared distance from p to grid vertex v, in fixed-point units (1/16 of a
 // grid step): the one distance every search is decided by.

@@ -20,12 +20,12 @@ void Traversal::startComponent(uint32_t a, uint32_t b, uint32_t c) {
     const uint32_t corner[3] = {a, b, c};
     for (uint32_t v : corner) {
         if (v >= vertexCount())
-            throw Error("start triangle refers to vertex " + std::to_string(v) + ", but there are only " +
+            throw Error(ErrorKind::Corrupt, "start triangle refers to vertex " + std::to_string(v) + ", but there are only " +
                         std::to_string(vertexCount()) + " vertices");
         if (state_[v] != kUntouched)
-            throw Error("start triangle uses vertex " + std::to_string(v) + ", which an earlier component already uses");
+            throw Error(ErrorKind::Corrupt, "start triangle uses vertex " + std::to_string(v) + ", which an earlier component already uses");
     }
-    if (a == b || b == c || a == c) throw Error("start triangle repeats vertex " + std::to_string(a == b ? a : c));
+    if (a == b || b == c || a == c) throw Error(ErrorKind::Corrupt, "start triangle repeats vertex " + std::to_string(a == b ? a : c));
     componentStart_ = triangleCount();
     // The paper pushes the three edges in order to the back; (a, b) is popped first.
     addHalfEdge(a, b, c);
@@ -61,10 +61,10 @@ void Traversal::closeAsBoundary(const OpenEdge& edge) {
 
 void Traversal::attachApex(const OpenEdge& edge, uint32_t apex) {
     if (apex >= vertexCount() || state_[apex] == kCulled || apex == edge.vi || apex == edge.vj)
-        throw Error("the stream attaches vertex " + std::to_string(apex) + " to edge " + std::to_string(edge.vi) +
+        throw Error(ErrorKind::Corrupt, "the stream attaches vertex " + std::to_string(apex) + " to edge " + std::to_string(edge.vi) +
                     "-" + std::to_string(edge.vj) + ", where it cannot go");
     if (halfEdges_.contains(edge.vi, apex) || halfEdges_.contains(apex, edge.vj))
-        throw Error("triangle (" + std::to_string(edge.vj) + ", " + std::to_string(edge.vi) + ", " +
+        throw Error(ErrorKind::Corrupt, "triangle (" + std::to_string(edge.vj) + ", " + std::to_string(edge.vi) + ", " +
                     std::to_string(apex) + ") would reuse a directed edge");
     addHalfEdge(edge.vj, edge.vi, apex);
     addHalfEdge(edge.vi, apex, edge.vj);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common.h"
+
 namespace drm {
 namespace {
 
@@ -18,12 +20,6 @@ constexpr uint64_t kTargetOccupancy = 4;
 // axis (a 32 KB bitmap); surfaces keep about 4x fewer vertices per cell with
 // each halving of the cell size, which sets the final size.
 constexpr int kSurveyCellsPerAxisBits = 6;
-
-int bitLength(uint64_t m) {
-    int n = 0;
-    for (; m != 0; m >>= 1) ++n;
-    return n;
-}
 
 int64_t floorShift(int64_t v, int s) { return v >= 0 ? v >> s : -((-v - 1) >> s) - 1; }
 

@@ -2,6 +2,7 @@
 // and the tree order both follow the surface, so differences are mostly
 // small. A difference is zigzag-mapped, then coded as its bit length (an
 // adaptive symbol) and the bits below the leading one.
+#include "common.h"
 #include "vertex_order.h"
 
 #include <string>
@@ -18,11 +19,6 @@ constexpr uint32_t kLengths = 34;  // bit lengths 0..33 of zigzagged 33-bit diff
 uint64_t zigzag(int64_t d) { return d >= 0 ? uint64_t(d) * 2 : uint64_t(-d) * 2 - 1; }
 int64_t unzigzag(uint64_t z) { return (z & 1) ? -int64_t((z + 1) / 2) : int64_t(z / 2); }
 
-int bitLength(uint64_t v) {
-    int n = 0;
-    for (; v != 0; v >>= 1) ++n;
-    return n;
-}
 
 AdaptiveFrequencies lengthModel() { return AdaptiveFrequencies(std::vector<uint16_t>(kLengths, 1)); }
 
@@ -53,8 +49,8 @@ std::vector<uint32_t> decodeVertexOrder(const uint8_t* data, size_t size, uint64
         const uint64_t z = n == 0 ? 0 : (uint64_t(1) << (n - 1)) | coder.decodeWideBits(n - 1);
         const int64_t value = previous + 1 + unzigzag(z);
         if (value < 0 || uint64_t(value) >= vertexCount || seen[size_t(value)])
-            throw Error("corrupt file: the vertex order section is not a permutation");
-        if (coder.bytesPastEnd() > 0) throw Error("corrupt file: the vertex order section ends early");
+            throw Error(ErrorKind::Corrupt, "corrupt file: the vertex order section is not a permutation");
+        if (coder.bytesPastEnd() > 0) throw Error(ErrorKind::Corrupt, "corrupt file: the vertex order section ends early");
         seen[size_t(value)] = 1;
         index = uint32_t(value);
         previous = value;

@@ -64,14 +64,14 @@ drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters) {
     if (parameters.hasParameter(kBitsParameter)) {
         const int bits = parameters.getInt(kBitsParameter);
         if (bits < kMinBits || bits > kMaxBits)
-            throw drm::Error(std::string(kBitsLabel) + " must be between " + std::to_string(kMinBits) + " and " +
+            throw drm::Error(drm::ErrorKind::InvalidInput, std::string(kBitsLabel) + " must be between " + std::to_string(kMinBits) + " and " +
                              std::to_string(kMaxBits) + ", not " + std::to_string(bits));
         options.bits = bits;
     }
     if (parameters.hasParameter(kPredictorParameter)) {
         const int index = parameters.getEnum(kPredictorParameter);
         if (index < 0 || index >= kPredictorChoiceCount)
-            throw drm::Error(std::string(kPredictorLabel) + " must be 0 (auto), 1 (parallelogram) or 2 "
+            throw drm::Error(drm::ErrorKind::InvalidInput, std::string(kPredictorLabel) + " must be 0 (auto), 1 (parallelogram) or 2 "
                              "(midpoint), not " + std::to_string(index));
         options.predictor = kPredictorChoices[index];
     }

@@ -2,6 +2,7 @@
 
 #include "bridge/encode_parameters.h"
 #include "bridge/encoding.h"
+#include "bridge/error_message.h"
 #include "bridge/host.h"
 #include "bridge/log_text.h"
 #include "bridge/progress_bridge.h"
@@ -102,10 +103,8 @@ bool DrmFilterPlugin::applyFilter(QAction* /*action*/, MeshDocument& md, const R
         }
         Log(drm_meshlab::rankHistogramText(encoded.stats));
         return true;
-    } catch (const drm::Error& e) {
-        return fail("Colorize Faces by Distance Rank: cannot rank " + name + ": " + e.what());
-    } catch (const std::bad_alloc&) {
-        return fail("Colorize Faces by Distance Rank: not enough memory to rank " + name);
+    } catch (...) {
+        return fail("Colorize Faces by Distance Rank: cannot rank " + name + ": " + drm_meshlab::currentErrorMessage());
     }
 }
 

@@ -17,7 +17,7 @@ std::vector<uint64_t> colourFacesByRank(CMeshO& cm, const std::vector<uint32_t>&
         ++facesPerBucket[size_t(drm::vcgio::rankBucket(rank))];
     }
     if (live != faceRank.size() || live != size_t(cm.fn))
-        throw drm::Error("the codec ranked " + std::to_string(faceRank.size()) + " faces, but the mesh has " +
+        throw drm::Error(drm::ErrorKind::InvalidInput, "the codec ranked " + std::to_string(faceRank.size()) + " faces, but the mesh has " +
                          std::to_string(cm.fn));
     return facesPerBucket;
 }

@@ -2,6 +2,7 @@
 
 #include "bridge/encode_parameters.h"
 #include "bridge/encoding.h"
+#include "bridge/error_message.h"
 #include "bridge/host.h"
 #include "bridge/lost_attributes.h"
 #include "bridge/progress_bridge.h"
@@ -103,15 +104,9 @@ bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshM
         }
         report("drm: opened " + name + ": " + drm_meshlab::statsSummary(decoded.stats));
         return true;
-    } catch (const drm::Error& e) {
+    } catch (...) {
         m.cm.Clear();
-        return fail("cannot open " + name + ": " + e.what());
-    } catch (const std::bad_alloc&) {
-        m.cm.Clear();
-        return fail("cannot open " + name + ": not enough memory");
-    } catch (const std::exception& e) {
-        m.cm.Clear();
-        return fail("cannot open " + name + ": " + e.what());
+        return fail("cannot open " + name + ": " + drm_meshlab::currentErrorMessage());
     }
 }
 
@@ -141,12 +136,8 @@ bool DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshM
         }
         report("drm: saved " + name + ": " + drm_meshlab::statsSummary(encoded.stats));
         return true;
-    } catch (const drm::Error& e) {
-        return fail("cannot save " + name + ": " + e.what());
-    } catch (const std::bad_alloc&) {
-        return fail("cannot save " + name + ": not enough memory");
-    } catch (const std::exception& e) {
-        return fail("cannot save " + name + ": " + e.what());
+    } catch (...) {
+        return fail("cannot save " + name + ": " + drm_meshlab::currentErrorMessage());
     }
 }
 

@@ -142,9 +142,11 @@ encode_decode_verify)
     ;;
 info_json)
     run 0 encode "$data/nefertiti.ply" n.drm
-    run 0 info n.drm
+    run 0 info n.drm --ranks
     grep -q '^boundary edges *34$' out.txt || fail "info: $(cat out.txt)"
-    run 0 info n.drm --json
+    run 0 info n.drm
+    grep -q '^faces *' out.txt || fail "info without --ranks: $(cat out.txt)"
+    run 0 info n.drm --json --ranks
     keys="vertices faces components boundary_edges bits predictor curvature connectivity_bytes geometry_bytes header_bytes total_bytes connectivity_bpv geometry_bpv total_bpv rank_histogram"
     if command -v python3 >/dev/null; then
         python3 - "$keys" out.txt <<'PY' || fail "info --json: $(cat out.txt)"

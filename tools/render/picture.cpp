@@ -58,11 +58,11 @@ void checkMesh(const drm::Mesh& mesh) {
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = mesh.triangles[3 * f + size_t(k)];
             if (v >= vertices)
-                throw drm::Error("face " + std::to_string(f) + " uses vertex " + std::to_string(v) + ", but there are only " +
+                throw drm::Error(drm::ErrorKind::InvalidInput, "face " + std::to_string(f) + " uses vertex " + std::to_string(v) + ", but there are only " +
                                  std::to_string(vertices) + " vertices");
             const float* p = &mesh.positions[3 * size_t(v)];
             if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-                throw drm::Error("vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
+                throw drm::Error(drm::ErrorKind::InvalidInput, "vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
         }
 }
 
@@ -86,9 +86,9 @@ void drawMesh(const Scene& scene, const QRect& area, Frame& frame) {
 
 std::vector<uint8_t> renderPng(const Scene& scene) {
     if (!scene.mesh || scene.faceColour.size() != scene.mesh->faceCount())
-        throw drm::Error("internal error: one colour per face is needed to render");
+        throw drm::Error(drm::ErrorKind::Internal, "internal error: one colour per face is needed to render");
     if (scene.width < kMinSide || scene.height < kMinSide || scene.width > kMaxSide || scene.height > kMaxSide)
-        throw drm::Error("picture size " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+        throw drm::Error(drm::ErrorKind::InvalidInput, "picture size " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
                          " is out of range");
     checkMesh(*scene.mesh);
 
@@ -108,7 +108,7 @@ std::vector<uint8_t> renderPng(const Scene& scene) {
     buffer.open(QIODevice::WriteOnly);
     // Quality 0 asks Qt's PNG writer for its strongest compression: the
     // pictures go into the repository.
-    if (!image.save(&buffer, "PNG", 0)) throw drm::Error("Qt could not encode the picture as PNG");
+    if (!image.save(&buffer, "PNG", 0)) throw drm::Error(drm::ErrorKind::InvalidInput, "Qt could not encode the picture as PNG");
     return std::vector<uint8_t>(png.begin(), png.end());
 }
 

@@ -36,12 +36,12 @@ std::string linkTarget(const std::string& path) {
         if (::lstat(current.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return current;
         std::vector<char> buffer(size_t(info.st_size > 0 ? info.st_size : 255) + 1);
         const ssize_t n = ::readlink(current.c_str(), buffer.data(), buffer.size());
-        if (n < 0) throw Error("cannot write " + path + ": " + systemReason());
-        if (size_t(n) >= buffer.size()) throw Error("cannot write " + path + ": the link changed while read");
+        if (n < 0) throw Error(ErrorKind::Io, "cannot write " + path + ": " + systemReason());
+        if (size_t(n) >= buffer.size()) throw Error(ErrorKind::Io, "cannot write " + path + ": the link changed while read");
         const std::string to(buffer.data(), size_t(n));
         current = (!to.empty() && to[0] == '/') ? to : folderOf(current) + "/" + to;
     }
-    throw Error("cannot write " + path + ": too many levels of symbolic links");
+    throw Error(ErrorKind::Io, "cannot write " + path + ": too many levels of symbolic links");
 }
 
 }  // namespace
@@ -54,12 +54,12 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     struct stat existing;
     const bool replacing = ::stat(target.c_str(), &existing) == 0;
     if (replacing) {
-        if (S_ISDIR(existing.st_mode)) throw Error("cannot write " + shown + ": it is a directory");
-        if (!S_ISREG(existing.st_mode)) throw Error("cannot write " + shown + ": not a regular file");
+        if (S_ISDIR(existing.st_mode)) throw Error(ErrorKind::Io, "cannot write " + shown + ": it is a directory");
+        if (!S_ISREG(existing.st_mode)) throw Error(ErrorKind::Io, "cannot write " + shown + ": not a regular file");
         // The folder may let us rename over a file we may not write (mode
         // 444): refuse, as MeshLab's own exporters and most editors do.
         if (::access(target.c_str(), W_OK) != 0)
-            throw Error("cannot write " + shown + ": " +
+            throw Error(ErrorKind::Io, "cannot write " + shown + ": " +
                         (errno == EACCES || errno == EPERM || errno == EROFS
                              ? std::string("the file is read-only for you (") + systemReason() + ")"
                              : systemReason()));
@@ -68,7 +68,7 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     // The content is produced first, so a failing writer touches no file.
     std::ostringstream content(std::ios::binary);
     write(content);
-    if (!content) throw Error("cannot write " + shown + ": the output could not be produced");
+    if (!content) throw Error(ErrorKind::Io, "cannot write " + shown + ": the output could not be produced");
     const std::string bytes = content.str();
 
     // mkstemp creates a new file with a random name, exclusively: it never
@@ -76,11 +76,11 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     // the file it created is ever removed.
     std::string temporary = target + ".tmp.XXXXXX";
     const int fd = ::mkstemp(&temporary[0]);
-    if (fd < 0) throw Error("cannot write " + shown + ": " + systemReason());
+    if (fd < 0) throw Error(ErrorKind::Io, "cannot write " + shown + ": " + systemReason());
     auto fail = [&](const std::string& reason) {
         ::close(fd);
         ::unlink(temporary.c_str());
-        throw Error("cannot write " + shown + ": " + reason);
+        throw Error(ErrorKind::Io, "cannot write " + shown + ": " + reason);
     };
     if (replacing) {
         // The new file takes the old one's owner (only root may give a file
@@ -110,12 +110,12 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     if (::fsync(fd) != 0) fail(systemReason());
     if (::close(fd) != 0) {
         ::unlink(temporary.c_str());
-        throw Error("cannot write " + shown + ": " + systemReason());
+        throw Error(ErrorKind::Io, "cannot write " + shown + ": " + systemReason());
     }
     if (std::rename(temporary.c_str(), target.c_str()) != 0) {
         const std::string reason = systemReason();
         ::unlink(temporary.c_str());
-        throw Error("cannot write " + shown + ": " + reason);
+        throw Error(ErrorKind::Io, "cannot write " + shown + ": " + reason);
     }
     // The rename lives in the folder: sync it too, or a crash soon after
     // can bring back the old file (or none). The new file is in place by
@@ -124,7 +124,7 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     if (folder >= 0) {
         const bool failed = ::fsync(folder) != 0 && errno == EIO;
         ::close(folder);
-        if (failed) throw Error("cannot write " + shown + ": the folder could not be synced (I/O error)");
+        if (failed) throw Error(ErrorKind::Io, "cannot write " + shown + ": the folder could not be synced (I/O error)");
     }
 }
 
@@ -136,14 +136,14 @@ void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& by
 
 std::vector<uint8_t> readFileBytes(const std::string& path) {
     struct stat info;
-    if (::stat(path.c_str(), &info) != 0) throw Error("cannot read " + path + ": " + systemReason());
-    if (!S_ISREG(info.st_mode)) throw Error("cannot read " + path + ": not a regular file");
+    if (::stat(path.c_str(), &info) != 0) throw Error(ErrorKind::Io, "cannot read " + path + ": " + systemReason());
+    if (!S_ISREG(info.st_mode)) throw Error(ErrorKind::Io, "cannot read " + path + ": not a regular file");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot read " + path + ": " + systemReason());
+    if (!in) throw Error(ErrorKind::Io, "cannot read " + path + ": " + systemReason());
     std::vector<uint8_t> bytes(size_t(info.st_size));
     in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
     if (in.gcount() != std::streamsize(bytes.size()))
-        throw Error("cannot read " + path + ": read " + std::to_string(in.gcount()) + " of " +
+        throw Error(ErrorKind::Io, "cannot read " + path + ": read " + std::to_string(in.gcount()) + " of " +
                     std::to_string(bytes.size()) + " bytes");
     return bytes;
 }

@@ -9,7 +9,7 @@ namespace {
 void checkSize(const std::string& path, size_t size, size_t perItem, size_t items, const char* array,
                const char* item) {
     if (size != 0 && size != perItem * items)
-        throw Error("cannot write " + path + ": " + std::to_string(size) + " " + array + " values for " +
+        throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": " + std::to_string(size) + " " + array + " values for " +
                     std::to_string(items) + " " + item + " (expected " + std::to_string(perItem * items) + ")");
 }
 
@@ -17,14 +17,14 @@ void checkSize(const std::string& path, size_t size, size_t perItem, size_t item
 
 void checkMeshForWriting(const std::string& path, const drm::Mesh& mesh) {
     if (mesh.positions.size() % 3 != 0 || mesh.triangles.size() % 3 != 0)
-        throw Error("cannot write " + path + ": mesh arrays are not a multiple of 3 long");
+        throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": mesh arrays are not a multiple of 3 long");
     const size_t vertices = mesh.vertexCount(), faces = mesh.faceCount();
     for (size_t c = 0; c < mesh.triangles.size(); ++c) {
         if (mesh.triangles[c] >= vertices)
-            throw Error("cannot write " + path + ": face " + std::to_string(c / 3) + " refers to missing vertex " +
+            throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": face " + std::to_string(c / 3) + " refers to missing vertex " +
                         std::to_string(mesh.triangles[c]));
     }
-    if (vertices > 0x7FFFFFFFu) throw Error("cannot write " + path + ": too many vertices for int indices");
+    if (vertices > 0x7FFFFFFFu) throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": too many vertices for int indices");
     checkSize(path, mesh.colors.size(), 4, vertices, "colour", "vertices");
     checkSize(path, mesh.normals.size(), 3, vertices, "normal", "vertices");
     checkSize(path, mesh.texCoords.size(), 2, vertices, "texture coordinate", "vertices");
@@ -37,11 +37,11 @@ void checkMeshForWriting(const std::string& path, const drm::Mesh& mesh) {
     checkSize(path, mesh.faceTexture.size(), 1, faces, "face texture", "faces");
     for (size_t f = 0; f < mesh.faceMaterial.size(); ++f)
         if (mesh.faceMaterial[f] >= mesh.materials.size())
-            throw Error("cannot write " + path + ": face " + std::to_string(f) + " uses material " +
+            throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": face " + std::to_string(f) + " uses material " +
                         std::to_string(mesh.faceMaterial[f]) + " of " + std::to_string(mesh.materials.size()));
     for (size_t f = 0; f < mesh.faceTexture.size(); ++f)
         if (mesh.faceTexture[f] > 0x7FFFu)
-            throw Error("cannot write " + path + ": face " + std::to_string(f) + " uses texture " +
+            throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": face " + std::to_string(f) + " uses texture " +
                         std::to_string(mesh.faceTexture[f]));
 }
 

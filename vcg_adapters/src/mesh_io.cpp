@@ -101,7 +101,7 @@ void addCustomPropertyNote(std::vector<std::string>& notes, const std::vector<st
 void checkFinite(const std::vector<float>& values, size_t perItem, const char* item, const char* what) {
     for (size_t i = 0; i < values.size(); ++i)
         if (!std::isfinite(values[i]))
-            throw Error(std::string(item) + " " + std::to_string(i / perItem) + " has a non-finite " + what + " (" +
+            throw Error(ErrorKind::InvalidInput, std::string(item) + " " + std::to_string(i / perItem) + " has a non-finite " + what + " (" +
                         std::to_string(values[i]) + ")");
 }
 
@@ -142,7 +142,7 @@ LoadedMesh fromLoadingMesh(const LoadingMesh& m, int mask) {
 // took from the file catches that.
 void checkTriangleCount(uint64_t expected, const drm::Mesh& mesh) {
     if (mesh.faceCount() != expected)
-        throw Error("vcglib read " + std::to_string(mesh.faceCount()) + " of the " + std::to_string(expected) +
+        throw Error(ErrorKind::InvalidInput, "vcglib read " + std::to_string(mesh.faceCount()) + " of the " + std::to_string(expected) +
                     " triangles the file describes (unsupported property types?)");
 }
 
@@ -152,9 +152,9 @@ LoadedMesh loadPly(const std::string& path) {
     LoadingMesh m;
     int mask = 0;
     const int status = vcg::tri::io::ImporterPLY<LoadingMesh>::Open(m, path.c_str(), mask);
-    if (status == vcg::tri::io::PlyInfo::E_SHORTFILE) throw Error("the file ends early (truncated?)");
+    if (status == vcg::tri::io::PlyInfo::E_SHORTFILE) throw Error(ErrorKind::InvalidInput, "the file ends early (truncated?)");
     if (vcg::tri::io::ImporterPLY<LoadingMesh>::ErrorCritical(status))
-        throw Error(vcg::tri::io::ImporterPLY<LoadingMesh>::ErrorMsg(status));
+        throw Error(ErrorKind::InvalidInput, vcg::tri::io::ImporterPLY<LoadingMesh>::ErrorMsg(status));
     LoadedMesh loaded = fromLoadingMesh(m, mask);
     addCustomPropertyNote(loaded.notes, properties);
     if (expectedTriangles >= 0) checkTriangleCount(uint64_t(expectedTriangles), loaded.mesh);
@@ -169,7 +169,7 @@ LoadedMesh loadOff(const std::string& path) {
     LoadingMesh m;
     int mask = 0;
     const int status = vcg::tri::io::ImporterOFF<LoadingMesh>::OpenMem(m, text.data(), text.size(), mask);
-    if (status != 0) throw Error(vcg::tri::io::ImporterOFF<LoadingMesh>::ErrorMsg(status));
+    if (status != 0) throw Error(ErrorKind::InvalidInput, vcg::tri::io::ImporterOFF<LoadingMesh>::ErrorMsg(status));
     LoadedMesh loaded = fromLoadingMesh(m, mask);
     checkTriangleCount(expectedTriangles, loaded.mesh);
     return loaded;
@@ -180,7 +180,7 @@ LoadedMesh loadStl(const std::string& path) {
     LoadingMesh m;
     int mask = 0;
     const int status = vcg::tri::io::ImporterSTL<LoadingMesh>::Open(m, path.c_str(), mask);
-    if (status != 0) throw Error(vcg::tri::io::ImporterSTL<LoadingMesh>::ErrorMsg(status));
+    if (status != 0) throw Error(ErrorKind::InvalidInput, vcg::tri::io::ImporterSTL<LoadingMesh>::ErrorMsg(status));
     LoadedMesh loaded;
     const drm::Mesh soup = fromVcg(m);
     loaded.mesh = weldIdenticalPositions(soup);
@@ -263,9 +263,9 @@ bool isMeshFileName(const std::string& path) {
 LoadedMesh loadMesh(const std::string& path) {
     const std::string prefix = "cannot read " + path + ": ";
     struct stat info;
-    if (::stat(path.c_str(), &info) != 0) throw Error(prefix + std::strerror(errno));
-    if (!S_ISREG(info.st_mode)) throw Error(prefix + "not a regular file");
-    if (info.st_size == 0) throw Error(prefix + "the file is empty");
+    if (::stat(path.c_str(), &info) != 0) throw Error(ErrorKind::Io, prefix + std::strerror(errno));
+    if (!S_ISREG(info.st_mode)) throw Error(ErrorKind::Io, prefix + "not a regular file");
+    if (info.st_size == 0) throw Error(ErrorKind::InvalidInput, prefix + "the file is empty");
     const std::string extension = lowerExtension(path);
     try {
         LoadedMesh loaded;
@@ -273,17 +273,17 @@ LoadedMesh loadMesh(const std::string& path) {
         else if (extension == ".off") loaded = loadOff(path);
         else if (extension == ".stl") loaded = loadStl(path);
         else if (extension == ".obj") loaded = loadObj(path);
-        else throw Error("unknown mesh format '" + extension + "' (expected .ply, .obj, .off or .stl)");
-        if (loaded.mesh.vertexCount() == 0) throw Error("the file holds no vertices");
+        else throw Error(ErrorKind::InvalidInput, "unknown mesh format '" + extension + "' (expected .ply, .obj, .off or .stl)");
+        if (loaded.mesh.vertexCount() == 0) throw Error(ErrorKind::InvalidInput, "the file holds no vertices");
         checkAttributesFinite(loaded.mesh);
         return loaded;
     } catch (const std::bad_alloc&) {
-        throw Error(prefix + "out of memory (is the header's element count right?)");
+        throw Error(ErrorKind::InvalidInput, prefix + "out of memory (is the header's element count right?)");
     } catch (const std::exception& e) {
         const std::string reason = e.what();
         // readFileBytes already names the file.
-        if (reason.compare(0, 12, "cannot read ") == 0) throw Error(reason);
-        throw Error(prefix + reason);
+        if (reason.compare(0, 12, "cannot read ") == 0) throw Error(ErrorKind::InvalidInput, reason);
+        throw Error(ErrorKind::InvalidInput, prefix + reason);
     }
 }
 

@@ -29,7 +29,7 @@ std::vector<std::string> splitBlanks(const std::string& line) {
 float parseCoordinate(const std::string& token, const std::string& where) {
     char* end = nullptr;
     const double value = std::strtod(token.c_str(), &end);
-    if (end == token.c_str() || *end != '\0') throw Error(where + ": '" + token + "' is not a number");
+    if (end == token.c_str() || *end != '\0') throw Error(ErrorKind::InvalidInput, where + ": '" + token + "' is not a number");
     return float(value);
 }
 
@@ -51,13 +51,13 @@ long resolveReference(const std::string& part, size_t known, const std::string& 
     char* endOfNumber = nullptr;
     const long index = std::strtol(part.c_str(), &endOfNumber, 10);
     if (endOfNumber == part.c_str() || *endOfNumber != '\0' || errno != 0 || index == 0)
-        throw Error(where + ": '" + token + "' is not a " + what + " reference");
+        throw Error(ErrorKind::InvalidInput, where + ": '" + token + "' is not a " + what + " reference");
     if (index < 0) {
-        if (-index > long(known)) throw Error(where + ": " + what + " reference " + part + " goes before the first one");
+        if (-index > long(known)) throw Error(ErrorKind::InvalidInput, where + ": " + what + " reference " + part + " goes before the first one");
         return long(known) + index;
     }
     if (index - 1 > long(std::numeric_limits<uint32_t>::max() - 1))
-        throw Error(where + ": " + what + " reference " + part + " is too large");
+        throw Error(ErrorKind::InvalidInput, where + ": " + what + " reference " + part + " is too large");
     return index - 1;
 }
 
@@ -111,23 +111,23 @@ ObjContents readObj(const std::string& text) {
         const std::string& keyword = tokens[0];
 
         if (keyword == "v") {
-            if (tokens.size() < 4) throw Error(where + ": a vertex needs three coordinates");
+            if (tokens.size() < 4) throw Error(ErrorKind::InvalidInput, where + ": a vertex needs three coordinates");
             for (int k = 1; k <= 3; ++k) mesh.positions.push_back(parseCoordinate(tokens[size_t(k)], where));
             const bool coloured = tokens.size() >= 7;
             hasColour.push_back(coloured);
             for (int k = 4; k <= 6; ++k) colours.push_back(coloured ? parseCoordinate(tokens[size_t(k)], where) : 1.0f);
         } else if (keyword == "vt") {
-            if (tokens.size() < 2) throw Error(where + ": a texture coordinate needs at least u");
+            if (tokens.size() < 2) throw Error(ErrorKind::InvalidInput, where + ": a texture coordinate needs at least u");
             texCoords.push_back(parseCoordinate(tokens[1], where));
             texCoords.push_back(tokens.size() >= 3 ? parseCoordinate(tokens[2], where) : 0.0f);
             if (!std::isfinite(texCoords[texCoords.size() - 2]) || !std::isfinite(texCoords.back()))
-                throw Error(where + ": texture coordinate " + std::to_string(texCoords.size() / 2) + " is not finite");
+                throw Error(ErrorKind::InvalidInput, where + ": texture coordinate " + std::to_string(texCoords.size() / 2) + " is not finite");
         } else if (keyword == "vn") {
-            if (tokens.size() < 4) throw Error(where + ": a normal needs three coordinates");
+            if (tokens.size() < 4) throw Error(ErrorKind::InvalidInput, where + ": a normal needs three coordinates");
             for (int k = 1; k <= 3; ++k) normals.push_back(parseCoordinate(tokens[size_t(k)], where));
             for (int k = 1; k <= 3; ++k)
                 if (!std::isfinite(normals[normals.size() - size_t(k)]))
-                    throw Error(where + ": normal " + std::to_string(normals.size() / 3) + " is not finite");
+                    throw Error(ErrorKind::InvalidInput, where + ": normal " + std::to_string(normals.size() / 3) + " is not finite");
         } else if (keyword == "usemtl") {
             // A material name may hold blanks: everything after the keyword.
             const size_t from = line.find_first_not_of(" \t", line.find("usemtl") + 6);
@@ -145,7 +145,7 @@ ObjContents readObj(const std::string& text) {
             contents.linesOrPoints = true;
         } else if (keyword == "f") {
             const size_t cornerCount = tokens.size() - 1;
-            if (cornerCount < 3) throw Error(where + ": a face needs at least three corners");
+            if (cornerCount < 3) throw Error(ErrorKind::InvalidInput, where + ": a face needs at least three corners");
             std::vector<uint32_t> corners;
             std::vector<long> tex, nor;
             for (size_t c = 1; c < tokens.size(); ++c) {
@@ -194,7 +194,7 @@ ObjContents readObj(const std::string& text) {
         const std::string what = check.what;
         const size_t known = what == "vertex" ? counts[0] : what == "normal" ? counts[2] : counts[1];
         if (size_t(check.index) > known)
-            throw Error("line " + std::to_string(check.line) + ": face refers to " + what + " " +
+            throw Error(ErrorKind::InvalidInput, "line " + std::to_string(check.line) + ": face refers to " + what + " " +
                         std::to_string(check.index) + ", but the file has " + std::to_string(known) + " of them");
     }
 

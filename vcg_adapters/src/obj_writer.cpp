@@ -238,7 +238,7 @@ std::vector<std::string> saveMesh(const std::string& path, const drm::Mesh& mesh
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension == ".ply") return savePly(path, mesh);
     if (extension == ".obj") return saveObj(path, mesh);
-    throw Error("cannot write " + path + ": unknown mesh format (expected .ply or .obj)");
+    throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": unknown mesh format (expected .ply or .obj)");
 }
 
 }  // namespace vcgio

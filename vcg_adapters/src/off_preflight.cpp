@@ -59,14 +59,14 @@ long parseInteger(const std::string& token, const std::string& where) {
     char* end = nullptr;
     const long value = std::strtol(token.c_str(), &end, 10);
     if (end == token.c_str() || *end != '\0' || errno != 0)
-        throw Error(where + ": '" + token + "' is not an integer");
+        throw Error(ErrorKind::InvalidInput, where + ": '" + token + "' is not an integer");
     return value;
 }
 
 void parseNumber(const std::string& token, const std::string& where) {
     char* end = nullptr;
     std::strtod(token.c_str(), &end);
-    if (end == token.c_str() || *end != '\0') throw Error(where + ": '" + token + "' is not a number");
+    if (end == token.c_str() || *end != '\0') throw Error(ErrorKind::InvalidInput, where + ": '" + token + "' is not a number");
 }
 
 }  // namespace
@@ -75,7 +75,7 @@ uint64_t preflightOff(const std::string& text) {
     OffLines lines(text);
     std::vector<std::string> tokens;
     if (!lines.next(tokens) || tokens.empty() || tokens[0].rfind("OFF") == std::string::npos)
-        throw Error("not an OFF file: its first line has no OFF keyword");
+        throw Error(ErrorKind::InvalidInput, "not an OFF file: its first line has no OFF keyword");
 
     // The keyword's prefix letters say what each vertex carries.
     const std::string& keyword = tokens[0];
@@ -85,20 +85,20 @@ uint64_t preflightOff(const std::string& text) {
         if (c == 'C') colours = true;
         else if (c == 'N') normals = true;
         else if (c == 'T' && u > 0 && keyword[size_t(u) - 1] == 'S') textureCoordinates = true;
-        else if (c == '4' || c == 'n') throw Error("'" + keyword + "' files (homogeneous or n-dimensional) are not supported");
+        else if (c == '4' || c == 'n') throw Error(ErrorKind::InvalidInput, "'" + keyword + "' files (homogeneous or n-dimensional) are not supported");
     }
 
     if (tokens.size() == 1) lines.next(tokens);
     else tokens.erase(tokens.begin());
-    if (tokens.size() < 3) throw Error(lines.where() + ": expected the vertex, face and edge counts");
+    if (tokens.size() < 3) throw Error(ErrorKind::InvalidInput, lines.where() + ": expected the vertex, face and edge counts");
     const long vertexCount = parseInteger(tokens[0], lines.where());
     const long faceCount = parseInteger(tokens[1], lines.where());
     // Each vertex needs at least 6 bytes ("0 0 0\n"), each face 8 ("3 0 1 2\n"):
     // larger counts cannot fit and would only make the reader allocate wildly.
     if (vertexCount < 0 || size_t(vertexCount) > text.size() / 6)
-        throw Error("the header's vertex count " + tokens[0] + " does not fit in the file");
+        throw Error(ErrorKind::InvalidInput, "the header's vertex count " + tokens[0] + " does not fit in the file");
     if (faceCount < 0 || size_t(faceCount) > text.size() / 8)
-        throw Error("the header's face count " + tokens[1] + " does not fit in the file");
+        throw Error(ErrorKind::InvalidInput, "the header's face count " + tokens[1] + " does not fit in the file");
 
     // Vertices: coordinates (and normals, texture coordinates) are read token
     // by token across line breaks; colours are whatever else is on the line.
@@ -108,7 +108,7 @@ uint64_t preflightOff(const std::string& text) {
     auto nextToken = [&]() -> const std::string& {
         if (k == tokens.size()) {
             if (!lines.next(tokens) || tokens.empty())
-                throw Error("the file ends inside vertex " + std::to_string(vertex) + " of " +
+                throw Error(ErrorKind::InvalidInput, "the file ends inside vertex " + std::to_string(vertex) + " of " +
                             std::to_string(vertexCount));
             k = 0;
         }
@@ -119,7 +119,7 @@ uint64_t preflightOff(const std::string& text) {
         if (colours) {
             const long components = long(tokens.size()) - long(k) - (textureCoordinates ? 2 : 0);
             if (components < 0 || components > 4)
-                throw Error(lines.where() + ": vertex " + std::to_string(vertex) + " has " +
+                throw Error(ErrorKind::InvalidInput, lines.where() + ": vertex " + std::to_string(vertex) + " has " +
                             std::to_string(components) + " colour components");
             k += size_t(components);
         }
@@ -131,23 +131,23 @@ uint64_t preflightOff(const std::string& text) {
     uint64_t triangles = 0;
     for (long face = 0; face < faceCount; ++face) {
         if (!lines.next(tokens))
-            throw Error("the file ends after " + std::to_string(face) + " of the header's " +
+            throw Error(ErrorKind::InvalidInput, "the file ends after " + std::to_string(face) + " of the header's " +
                         std::to_string(faceCount) + " faces");
-        if (tokens.empty()) throw Error(lines.where() + ": blank line where face " + std::to_string(face) + " should be");
+        if (tokens.empty()) throw Error(ErrorKind::InvalidInput, lines.where() + ": blank line where face " + std::to_string(face) + " should be");
         const long corners = parseInteger(tokens[0], lines.where());
         if (corners < 3 || size_t(corners) > text.size() / 2)
-            throw Error(lines.where() + ": face " + std::to_string(face) + " has " + tokens[0] + " corners");
+            throw Error(ErrorKind::InvalidInput, lines.where() + ": face " + std::to_string(face) + " has " + tokens[0] + " corners");
         triangles += uint64_t(corners - 2);
         k = 1;
         for (long j = 0; j < corners; ++j) {
             if (k == tokens.size()) {
                 if (!lines.next(tokens) || tokens.empty())
-                    throw Error("the file ends inside face " + std::to_string(face));
+                    throw Error(ErrorKind::InvalidInput, "the file ends inside face " + std::to_string(face));
                 k = 0;
             }
             const long index = parseInteger(tokens[k++], lines.where());
             if (index < 0 || index >= vertexCount)
-                throw Error(lines.where() + ": face " + std::to_string(face) + " refers to vertex " +
+                throw Error(ErrorKind::InvalidInput, lines.where() + ": face " + std::to_string(face) + " refers to vertex " +
                             std::to_string(index) + ", but the file has " + std::to_string(vertexCount) +
                             " vertices");
         }

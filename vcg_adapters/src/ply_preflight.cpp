@@ -144,50 +144,50 @@ int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>
         const std::vector<std::string> tokens = splitBlanks(line);
         const std::string where = "header line " + std::to_string(lineNumber);
         if (lineNumber == 1) {
-            if (tokens.size() != 1 || tokens[0] != "ply") throw Error("not a PLY file: it does not start with \"ply\"");
+            if (tokens.size() != 1 || tokens[0] != "ply") throw Error(ErrorKind::InvalidInput, "not a PLY file: it does not start with \"ply\"");
             continue;
         }
         if (tokens.empty() || tokens[0] == "comment" || tokens[0] == "obj_info") continue;
         if (tokens[0] == "format") {
-            if (tokens.size() < 2) throw Error(where + ": format without a name");
+            if (tokens.size() < 2) throw Error(ErrorKind::InvalidInput, where + ": format without a name");
             if (tokens[1] == "ascii") encoding = Encoding::Ascii;
             else if (tokens[1] == "binary_little_endian") encoding = Encoding::LittleEndian;
             else if (tokens[1] == "binary_big_endian") encoding = Encoding::BigEndian;
-            else throw Error(where + ": unknown format '" + tokens[1] + "'");
+            else throw Error(ErrorKind::InvalidInput, where + ": unknown format '" + tokens[1] + "'");
             sawFormat = true;
         } else if (tokens[0] == "element") {
-            if (tokens.size() != 3) throw Error(where + ": expected 'element NAME COUNT'");
+            if (tokens.size() != 3) throw Error(ErrorKind::InvalidInput, where + ": expected 'element NAME COUNT'");
             errno = 0;
             char* endOfNumber = nullptr;
             const long long count = std::strtoll(tokens[2].c_str(), &endOfNumber, 10);
             if (*endOfNumber != '\0' || errno != 0 || count < 0 || count > 0x7FFFFFFF)
-                throw Error(where + ": bad element count '" + tokens[2] + "'");
+                throw Error(ErrorKind::InvalidInput, where + ": bad element count '" + tokens[2] + "'");
             elements.push_back(Element{tokens[1], uint64_t(count), {}});
         } else if (tokens[0] == "property") {
-            if (elements.empty()) throw Error(where + ": property before any element");
+            if (elements.empty()) throw Error(ErrorKind::InvalidInput, where + ": property before any element");
             Property property;
             if (tokens.size() == 5 && tokens[1] == "list") {
                 property.countType = typeNamed(tokens[2]);
                 property.type = typeNamed(tokens[3]);
                 property.name = tokens[4];
                 if (!property.countType || !property.countType->integer || !property.type)
-                    throw Error(where + ": bad list types '" + tokens[2] + " " + tokens[3] + "'");
+                    throw Error(ErrorKind::InvalidInput, where + ": bad list types '" + tokens[2] + " " + tokens[3] + "'");
             } else if (tokens.size() == 3) {
                 property.type = typeNamed(tokens[1]);
                 property.name = tokens[2];
-                if (!property.type) throw Error(where + ": unknown type '" + tokens[1] + "'");
+                if (!property.type) throw Error(ErrorKind::InvalidInput, where + ": unknown type '" + tokens[1] + "'");
             } else {
-                throw Error(where + ": expected 'property TYPE NAME' or 'property list COUNT ITEM NAME'");
+                throw Error(ErrorKind::InvalidInput, where + ": expected 'property TYPE NAME' or 'property list COUNT ITEM NAME'");
             }
             elements.back().properties.push_back(property);
         } else if (tokens[0] == marker) {
             sawEnd = true;
         } else {
-            throw Error(where + ": unknown keyword '" + tokens[0] + "'");
+            throw Error(ErrorKind::InvalidInput, where + ": unknown keyword '" + tokens[0] + "'");
         }
     }
-    if (!sawEnd) throw Error("the header has no end_header line");
-    if (!sawFormat) throw Error("the header names no format");
+    if (!sawEnd) throw Error(ErrorKind::InvalidInput, "the header has no end_header line");
+    if (!sawFormat) throw Error(ErrorKind::InvalidInput, "the header names no format");
     if (properties)
         for (const Element& element : elements)
             for (const Property& property : element.properties) properties->push_back(element.name + "." + property.name);
@@ -202,38 +202,38 @@ int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>
         // Every item takes at least a byte; a count beyond that cannot be
         // real and would only make the reader allocate wildly.
         if (element.count > body.bytesLeft())
-            throw Error("the header's " + element.name + " count " + std::to_string(element.count) +
+            throw Error(ErrorKind::InvalidInput, "the header's " + element.name + " count " + std::to_string(element.count) +
                         " does not fit in the file");
         if (element.properties.empty() && element.count > 0)
-            throw Error("element '" + element.name + "' has items but no properties");
+            throw Error(ErrorKind::InvalidInput, "element '" + element.name + "' has items but no properties");
         for (uint64_t item = 0; item < element.count; ++item) {
             const std::string where = element.name + " " + std::to_string(item);
             for (const Property& property : element.properties) {
                 if (!property.countType) {
-                    if (!body.skip(*property.type)) throw Error("the file ends inside " + where + " (truncated?)");
+                    if (!body.skip(*property.type)) throw Error(ErrorKind::InvalidInput, "the file ends inside " + where + " (truncated?)");
                     continue;
                 }
                 int64_t entries = 0;
                 if (!body.readInteger(*property.countType, entries))
-                    throw Error("the file ends inside " + where + " (truncated?)");
+                    throw Error(ErrorKind::InvalidInput, "the file ends inside " + where + " (truncated?)");
                 const int64_t limit = listLimit(element.name, property.name);
                 const bool cornerList = limit == 127;
                 if (cornerList && triangles < 0) triangles = 0;
                 if (entries < 0 || (limit > 0 && entries > limit) || (cornerList && entries < 3))
-                    throw Error(where + " has " + std::to_string(entries) + " " + property.name + " entries" +
+                    throw Error(ErrorKind::InvalidInput, where + " has " + std::to_string(entries) + " " + property.name + " entries" +
                                 (cornerList ? " (faces need 3 to 127 corners)" : ""));
-                if (uint64_t(entries) > body.bytesLeft()) throw Error("the file ends inside " + where + " (truncated?)");
+                if (uint64_t(entries) > body.bytesLeft()) throw Error(ErrorKind::InvalidInput, "the file ends inside " + where + " (truncated?)");
                 if (cornerList) triangles += entries - 2;
                 for (int64_t i = 0; i < entries; ++i) {
                     if (!cornerList) {
-                        if (!body.skip(*property.type)) throw Error("the file ends inside " + where + " (truncated?)");
+                        if (!body.skip(*property.type)) throw Error(ErrorKind::InvalidInput, "the file ends inside " + where + " (truncated?)");
                         continue;
                     }
                     int64_t index = 0;
                     if (!property.type->integer || !body.readInteger(*property.type, index))
-                        throw Error(where + ": its corners are not integer vertex indices (or the file ends)");
+                        throw Error(ErrorKind::InvalidInput, where + ": its corners are not integer vertex indices (or the file ends)");
                     if (index < 0 || index >= vertexCount)
-                        throw Error(where + " refers to vertex " + std::to_string(index) + ", but the file has " +
+                        throw Error(ErrorKind::InvalidInput, where + " refers to vertex " + std::to_string(index) + ", but the file has " +
                                     std::to_string(vertexCount) + " vertices");
                 }
             }

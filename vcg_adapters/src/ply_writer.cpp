@@ -26,10 +26,10 @@ void appendFloat(std::string& out, float value) {
 void checkFaceAttributes(const std::string& path, const drm::Mesh& mesh, const FaceAttributes* attrs) {
     const size_t faces = mesh.faceCount();
     if (attrs && !attrs->rgb.empty() && attrs->rgb.size() != 3 * faces)
-        throw Error("cannot write " + path + ": " + std::to_string(attrs->rgb.size()) +
+        throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": " + std::to_string(attrs->rgb.size()) +
                     " colour bytes for " + std::to_string(faces) + " faces");
     if (attrs && !attrs->quality.empty() && attrs->quality.size() != faces)
-        throw Error("cannot write " + path + ": " + std::to_string(attrs->quality.size()) +
+        throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": " + std::to_string(attrs->quality.size()) +
                     " quality values for " + std::to_string(faces) + " faces");
 }
 

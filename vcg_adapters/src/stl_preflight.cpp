@@ -20,16 +20,16 @@ void preflightStl(const std::vector<uint8_t>& bytes) {
         return b >= 32 ? b < 127 : (b == '\n' || b == '\r' || b == '\t' || b == '\f' || b == '\v');
     });
     if (!plainText)
-        throw Error("not an STL file: as binary STL its size does not match its triangle count, "
+        throw Error(ErrorKind::InvalidInput, "not an STL file: as binary STL its size does not match its triangle count, "
                     "and it is not ASCII text");
     const size_t start = std::min(bytes.size(), size_t(std::find_if(bytes.begin(), bytes.end(), [](uint8_t b) {
                                                           return b != ' ' && b != '\t' && b != '\r' && b != '\n';
                                                       }) - bytes.begin()));
     const std::string solid = "solid";
     if (bytes.size() - start < solid.size() || !std::equal(solid.begin(), solid.end(), bytes.begin() + start))
-        throw Error("not an STL file: ASCII STL starts with \"solid\"");
+        throw Error(ErrorKind::InvalidInput, "not an STL file: ASCII STL starts with \"solid\"");
     if (std::find(bytes.begin() + start, bytes.end(), uint8_t('\n')) == bytes.end())
-        throw Error("not an STL file: ASCII STL without a single line break");
+        throw Error(ErrorKind::InvalidInput, "not an STL file: ASCII STL without a single line break");
 }
 
 }  // namespace vcgio

@@ -21,12 +21,57 @@
 
 namespace drm {
 
+// What kind of failure an Error reports (docs/library.md lists which
+// functions throw which).
+enum class ErrorKind : uint8_t {
+    InvalidInput = 0,  // the caller's mesh, options or names cannot be coded as given
+    Corrupt = 1,       // the data is not a well-formed .drm file: truncated, damaged or foreign
+    Unsupported = 2,   // a well-formed .drm file using a version or coder this library does not know
+    Cancelled = 3,     // the progress callback returned false
+    Io = 4,            // reading or writing a file failed (thrown by the tools and adapters, never by the codec)
+    Internal = 5,      // a bug: the codec's own consistency check failed
+};
+// "invalid input", "corrupt", "unsupported", "cancelled", "i/o", "internal".
+const char* errorKindName(ErrorKind kind);
+
 // Thrown by every function of the library on bad input, corrupt data or a
-// cancelled operation. what() is a complete sentence for the user.
+// cancelled operation. what() is a complete sentence for the user; kind()
+// says which of the failures above it is, for programs.
 class Error : public std::runtime_error {
 public:
-    explicit Error(const std::string& message) : std::runtime_error(message) {}
+    Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+    // An error of kind InvalidInput.
+    explicit Error(const std::string& message) : Error(ErrorKind::InvalidInput, message) {}
+    ErrorKind kind() const noexcept { return kind_; }
+
+private:
+    ErrorKind kind_;
 };
+
+// Limits and names, written once here and used by the library, the `drm`
+// tool, the MeshLab plugins and the docs.
+constexpr int kMinQuantizationBits = 1;      // EncodeOptions::bits
+constexpr int kMaxQuantizationBits = 21;     // keeps squared fixed-point distances within int64
+constexpr int kDefaultQuantizationBits = 12; // the paper's setting
+// The .drm format version this library writes, and the range it reads
+// (docs/format.md, "Versions").
+constexpr int kFileFormatVersion = 1;
+constexpr int kOldestReadableFormatVersion = 1;
+constexpr int kNewestReadableFormatVersion = 1;
+
+// The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
+// MeshLab rank filter, README's legend): bucket 0 is a component's start
+// triangle (stored, not ranked), buckets 1..3 ranks 1..3, bucket 4 ranks 4
+// and above.
+constexpr int kRankBucketCount = 5;
+struct RankPaletteEntry {
+    uint8_t r, g, b;
+    const char* colourName;  // "pale blue-grey"
+    const char* label;       // "rank 1"
+};
+// Buckets out of range are clamped to 0 .. kRankBucketCount - 1.
+const RankPaletteEntry& rankPaletteEntry(int bucket);
+inline int rankBucket(uint32_t rank) { return rank >= 4 ? 4 : int(rank); }
 
 // An indexed triangle mesh: xyz per vertex, three vertex indices per face.
 // Faces are oriented: (a, b, c) and (a, c, b) are different triangles.
@@ -143,6 +188,11 @@ struct Levers {
     static Levers none() { return Levers{false, false, false, false}; }
 };
 
+// The levers' names in parseLevers lists, in Levers' field order:
+// leverName(0) = "filter", 1 "gap", 2 "context", 3 "angle" (nullptr past them).
+constexpr int kLeverCount = 4;
+const char* leverName(int lever);
+
 // "all", "none", or a comma-separated list of filter, gap, context, angle.
 // Throws Error on anything else.
 Levers parseLevers(const std::string& list);
@@ -157,7 +207,7 @@ std::string leversName(const Levers& levers);
 enum class NeighbourIndex : uint8_t { Auto = 0, Grid = 1, Flann = 2 };
 
 struct EncodeOptions {
-    int bits = 12;                          // quantization bits per axis, 1..21
+    int bits = kDefaultQuantizationBits;    // quantization bits per axis, kMin..kMaxQuantizationBits
     Predictor predictor = Predictor::Auto;
     bool curvature = false;                 // the paper's curvature correction
     GeometryCoder geometry = GeometryCoder::SpanningTree;
@@ -318,6 +368,26 @@ Decoded decode(const uint8_t* data, size_t size, const DecodeOptions& options);
 inline Decoded decode(const std::vector<uint8_t>& bytes, const Progress& progress = Progress()) {
     return decode(bytes.data(), bytes.size(), progress);
 }
+
+// What a .drm file's header and section table say, read without decoding
+// anything (a few microseconds on any file). inspect() checks what it reads
+// as decode() does (signature, version, lengths, checksums, header fields)
+// and throws Error (Corrupt or Unsupported) on the same files.
+struct FileInfo {
+    int formatVersion = 0;
+    // Filled from the header and the section table: vertices (those the
+    // file stores; a welded mesh decodes to more, see decode()'s Stats),
+    // faces, components, bits, predictor, curvature, levers, geometry,
+    // refineBits, every *Bytes field, splitVertices, attributeSizes and
+    // attributeBytes. Left 0 or empty, because only decoding tells them:
+    // boundaryEdges, rankHistogram, flippedFaces, repeatedFaces,
+    // looseFaces, weldedVertices.
+    Stats stats;
+    bool keepsVertexOrder = false;
+    bool hasRepairs = false;
+};
+FileInfo inspect(const uint8_t* data, size_t size);
+inline FileInfo inspect(const std::vector<uint8_t>& bytes) { return inspect(bytes.data(), bytes.size()); }
 
 // Quantizes positions onto the grid encode() would use for these options.
 // Throws Error on empty input or non-finite coordinates.

@@ -38,12 +38,12 @@ template <class MeshType>
 void toVcg(const drm::Mesh& mesh, MeshType& out) {
     typedef typename MeshType::ScalarType Scalar;
     if (mesh.positions.size() % 3 != 0 || mesh.triangles.size() % 3 != 0)
-        throw drm::Error("mesh arrays are not a multiple of 3 long");
+        throw drm::Error(drm::ErrorKind::InvalidInput, "mesh arrays are not a multiple of 3 long");
     const size_t vertexCount = mesh.vertexCount();
     const size_t faceCount = mesh.faceCount();
     for (size_t c = 0; c < mesh.triangles.size(); ++c) {
         if (mesh.triangles[c] >= vertexCount)
-            throw drm::Error("face " + std::to_string(c / 3) + " refers to vertex " +
+            throw drm::Error(drm::ErrorKind::InvalidInput, "face " + std::to_string(c / 3) + " refers to vertex " +
                              std::to_string(mesh.triangles[c]) + ", but the mesh has " +
                              std::to_string(vertexCount) + " vertices");
     }
@@ -98,12 +98,12 @@ drm::Mesh fromVcg(const MeshType& in) {
         const typename MeshType::FaceType& face = in.face[f];
         if (face.IsD()) continue;
         if (face.VN() != 3)
-            throw drm::Error("face " + std::to_string(liveFace) + " has " +
+            throw drm::Error(drm::ErrorKind::InvalidInput, "face " + std::to_string(liveFace) + " has " +
                              std::to_string(face.VN()) + " corners, not 3");
         for (int k = 0; k < 3; ++k) {
             const size_t i = vertexIndexOf(in, face.cV(k));
             if (i == std::numeric_limits<size_t>::max() || compactIndex[i] == none)
-                throw drm::Error("face " + std::to_string(liveFace) +
+                throw drm::Error(drm::ErrorKind::InvalidInput, "face " + std::to_string(liveFace) +
                                  " refers to a vertex that does not exist");
             out.triangles.push_back(compactIndex[i]);
         }

@@ -1,0 +1,134 @@
+// The cell index of the spanning-tree geometry coder: the vertices decoded
+// so far, bucketed by cubic cells of the grid, to find those nearest a
+// point (the predictions are built from them). Encoder and decoder fill it
+// in the same order, so both find the same near points.
+#ifndef DRM_CELL_INDEX_H
+#define DRM_CELL_INDEX_H
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "common.h"
+
+namespace drm {
+
+// How many near decoded vertices a prediction is built from.
+constexpr int kNearest = 4;
+
+// Cell key -> the cell's latest vertex: open addressing with linear
+// probing, grown as cells appear (a decoder's table grows with what it has
+// decoded, never with what a header claims). Much cheaper than a node-based
+// map on the decoder's path.
+class CellHeads {
+public:
+    // The head of cell `key`, inserted as kNoVertex if absent.
+    uint32_t& at(uint64_t key) {
+        if (2 * (used_ + 1) > keys_.size()) grow();
+        size_t slot = find(key);
+        if (keys_[slot] == kEmpty) {
+            keys_[slot] = key;
+            heads_[slot] = kNoVertex;
+            ++used_;
+        }
+        return heads_[slot];
+    }
+    uint32_t get(uint64_t key) const {
+        if (keys_.empty()) return kNoVertex;
+        const size_t slot = find(key);
+        return keys_[slot] == key ? heads_[slot] : kNoVertex;
+    }
+
+private:
+    static constexpr uint64_t kEmpty = ~uint64_t(0);  // keys use 63 bits
+    size_t find(uint64_t key) const {
+        // The slot is the product's top bits, which every bit of the key
+        // reaches (the bits from 20 up, as taken before, never depended on
+        // the x field, bits 42 and up: cells sharing y and z collided and
+        // a third of predict() went to probing). Which slot a key gets
+        // changes nothing but speed.
+        const size_t mask = keys_.size() - 1;
+        size_t slot = size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - slotBits_));
+        while (keys_[slot] != kEmpty && keys_[slot] != key) slot = (slot + 1) & mask;
+        return slot;
+    }
+    void grow() {
+        std::vector<uint64_t> keys(std::max<size_t>(64, 2 * keys_.size()), kEmpty);
+        std::vector<uint32_t> heads(keys.size(), kNoVertex);
+        slotBits_ = 0;
+        while ((size_t(1) << slotBits_) < keys.size()) ++slotBits_;
+        keys.swap(keys_);
+        heads.swap(heads_);
+        for (size_t i = 0; i < keys.size(); ++i)
+            if (keys[i] != kEmpty) {
+                const size_t slot = find(keys[i]);
+                keys_[slot] = keys[i];
+                heads_[slot] = heads[i];
+            }
+    }
+    std::vector<uint64_t> keys_;
+    std::vector<uint32_t> heads_;
+    int slotBits_ = 0;  // keys_.size() == 2^slotBits_
+    size_t used_ = 0;
+};
+
+// The decoded vertices bucketed by cubic cells of side 2^cellBits, to find
+// those near a point. Each cell lists its vertices latest first.
+class DecodedCells {
+public:
+    explicit DecodedCells(int cellBits) : cellBits_(cellBits) {}
+    int cellBits() const { return cellBits_; }
+
+    void insert(uint32_t v, GridPoint at) {
+        uint32_t& head = head_.at(key(at.x, at.y, at.z));
+        if (next_.size() <= v) next_.resize(size_t(v) + 1, kNoVertex);
+        next_[v] = head;
+        head = v;
+    }
+
+    // The up to kNearest decoded vertices nearest `at` (other than `self`)
+    // in the 2x2x2 block of cells around it (its own cell and, on each axis,
+    // the neighbour on its nearer side), nearest first; ties go to the later
+    // vertex. Returns how many.
+    int nearest(const std::vector<GridPoint>& pos, uint32_t self, GridPoint at, GridPoint* near) const {
+        const int64_t side = int64_t(1) << cellBits_;
+        const int64_t half = side >> 1;
+        const int64_t step[3] = {(at.x & (side - 1)) < half ? -side : side, (at.y & (side - 1)) < half ? -side : side,
+                                 (at.z & (side - 1)) < half ? -side : side};
+        int64_t nearestD2[kNearest];
+        int count = 0;
+        for (int corner = 0; corner < 8; ++corner) {
+            const int64_t x = at.x + ((corner & 1) ? step[0] : 0), y = at.y + ((corner & 2) ? step[1] : 0),
+                          z = at.z + ((corner & 4) ? step[2] : 0);
+            if (x < 0 || y < 0 || z < 0 || x > kCoordinateMax || y > kCoordinateMax || z > kCoordinateMax) continue;
+            for (uint32_t v = head_.get(key(int32_t(x), int32_t(y), int32_t(z))); v != kNoVertex; v = next_[v]) {
+                if (v == self) continue;
+                const int64_t d2 = distance2(pos[v], at);
+                if (count == kNearest && d2 >= nearestD2[count - 1]) continue;
+                int i = count < kNearest ? count++ : count - 1;  // insertion into the sorted list
+                for (; i > 0 && nearestD2[i - 1] > d2; --i) {
+                    nearestD2[i] = nearestD2[i - 1];
+                    near[i] = near[i - 1];
+                }
+                nearestD2[i] = d2;
+                near[i] = pos[v];
+            }
+        }
+        return count;
+    }
+
+private:
+    static constexpr int64_t kCoordinateMax = (int64_t(1) << 21) - 1;
+    uint64_t key(int32_t x, int32_t y, int32_t z) const {  // coordinates below 2^21: 21 bits each
+        return (uint64_t(uint32_t(x) >> cellBits_) << 42) | (uint64_t(uint32_t(y) >> cellBits_) << 21) |
+               uint64_t(uint32_t(z) >> cellBits_);
+    }
+    int cellBits_;
+    CellHeads head_;                               // cell -> its latest vertex
+    std::vector<uint32_t> next_;                   // vertex -> the one before it in its cell
+};
+
+}  // namespace drm
+
+#endif  // DRM_CELL_INDEX_H

@@ -1,0 +1,71 @@
+// Small helpers every part of the codec uses, written once: the "no vertex"
+// index, bit lengths, integer grid points and their squared distances, and
+// a union-find.
+#ifndef DRM_COMMON_H
+#define DRM_COMMON_H
+
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace drm {
+
+// The index that stands for "no vertex" (no parent, no candidate, an empty
+// slot) wherever a vertex index is stored.
+constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
+
+// The number of bits needed to write m: 0 for 0, 1 for 1, 3 for 5.
+inline int bitLength(uint64_t m) {
+    int n = 0;
+    for (; m != 0; m >>= 1) ++n;
+    return n;
+}
+
+// A point of the quantization grid (or a difference of two).
+struct GridPoint {
+    int32_t x = 0, y = 0, z = 0;
+};
+inline GridPoint operator+(GridPoint a, GridPoint b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline GridPoint operator-(GridPoint a, GridPoint b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+
+// Vertex v of a grid stored as 3 coordinates per vertex.
+inline GridPoint gridPointOf(const std::vector<int32_t>& grid, uint32_t v) {
+    return {grid[3 * size_t(v)], grid[3 * size_t(v) + 1], grid[3 * size_t(v) + 2]};
+}
+
+// Exact squared distance between two grid points (coordinates below 2^21,
+// so 64 bits never overflow).
+inline int64_t distance2(GridPoint a, GridPoint b) {
+    const int64_t dx = int64_t(a.x) - b.x, dy = int64_t(a.y) - b.y, dz = int64_t(a.z) - b.z;
+    return dx * dx + dy * dy + dz * dz;
+}
+
+// Union-find with path halving. join(a, b) puts a's set under b's root;
+// joinToLower keeps the smaller root, so a set's root is its least member.
+struct UnionFind {
+    std::vector<uint32_t> parent;
+    explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    uint32_t root(uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    }
+    // False if a and b were already in one set.
+    bool join(uint32_t a, uint32_t b) {
+        a = root(a);
+        b = root(b);
+        if (a == b) return false;
+        parent[a] = b;
+        return true;
+    }
+    void joinToLower(uint32_t a, uint32_t b) {
+        a = root(a);
+        b = root(b);
+        if (a < b) parent[b] = a;
+        else if (b < a) parent[a] = b;
+    }
+};
+
+}  // namespace drm
+
+#endif  // DRM_COMMON_H

@@ -1,0 +1,59 @@
+// The bit models of the spanning-tree geometry coder's residuals (one set
+// per axis) and the one function through which encoder and decoder code a
+// residual with them (BitModel, Writer and Reader: bit_model.h).
+#ifndef DRM_RESIDUAL_MODEL_H
+#define DRM_RESIDUAL_MODEL_H
+
+#include <algorithm>
+#include <cstdint>
+
+#include "bit_model.h"
+#include "common.h"
+
+namespace drm {
+
+inline uint32_t magnitudeOf(int32_t v) { return uint32_t(v < 0 ? -int64_t(v) : v); }
+
+constexpr int kMagnitudeContexts = 8;
+constexpr int kMaxLength = 23;      // bit lengths of residuals of 21-bit coordinates
+constexpr int kAdaptiveLowBits = 2; // bits below the leading one with a model
+
+// The models of one axis' residuals.
+struct AxisModels {
+    BitModel zero[kMagnitudeContexts];
+    BitModel longer[kMagnitudeContexts][kMaxLength];  // unary bit length: "longer than k"
+    BitModel sign;
+    BitModel low[kMaxLength + 1][kAdaptiveLowBits];  // by bit length, 1..kMaxLength
+};
+
+// A residual: zero or not, the bit length n >= 1 in unary, the sign, then
+// the bits below the leading one (the first two adaptive, per n).
+template <class Io>
+int32_t codeResidual(Io& io, AxisModels& m, int context, int32_t r) {
+    const uint32_t magnitude = magnitudeOf(r);
+    if (io.bit(m.zero[context], magnitude == 0)) return 0;
+    const int n = bitLength(magnitude);
+    int length = 1;
+    while (length < kMaxLength && io.bit(m.longer[context][length], n > length)) ++length;
+    const bool negative = io.bit(m.sign, r < 0) != 0;
+    uint32_t value = 1;
+    for (int k = 0; k < std::min(length - 1, kAdaptiveLowBits); ++k)
+        value = (value << 1) | uint32_t(io.bit(m.low[length][k], (magnitude >> (length - 2 - k)) & 1));
+    const int rest = length - 1 - std::min(length - 1, kAdaptiveLowBits);
+    value = (value << rest) | io.plain(magnitude, rest);
+    return negative ? -int32_t(value) : int32_t(value);
+}
+
+// The encoder's estimate of codeResidual's cost, in bits.
+inline double residualBits(const AxisModels& m, int context, int32_t r) {
+    const uint32_t magnitude = magnitudeOf(r);
+    if (magnitude == 0) return m.zero[context].cost(1);
+    const int n = bitLength(magnitude);
+    double bits = m.zero[context].cost(0) + 1.0 + (n - 1);
+    for (int length = 1; length < kMaxLength && length <= n; ++length) bits += m.longer[context][length].cost(n > length);
+    return bits;
+}
+
+}  // namespace drm
+
+#endif  // DRM_RESIDUAL_MODEL_H

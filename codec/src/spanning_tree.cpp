@@ -1,0 +1,134 @@
+#include "spanning_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "cell_index.h"
+#include "quantize.h"
+#include "spatial_index.h"
+
+namespace drm {
+
+namespace {
+
+uint64_t residualCost(GridPoint r) {  // Exp-Golomb length, to pick the predictor
+    auto one = [](int32_t v) { return uint64_t(2 * bitLength(uint32_t(v < 0 ? -int64_t(v) : v)) + 1); };
+    return one(r.x) + one(r.y) + one(r.z);
+}
+
+}  // namespace
+
+// Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
+// children nearest first.
+std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, NeighbourIndex index,
+                                                  double* spacing) {
+    const size_t n = grid.size() / 3;
+    std::vector<std::vector<uint32_t>> children(n);
+    *spacing = 1;
+    if (n < 2) return children;
+    // The kNeighbours nearest of every vertex, exactly, on the integer grid
+    // (either index gives the same graph).
+    std::vector<uint32_t> neighbours;
+    std::vector<int64_t> distance2;
+    makeSpatialIndex(grid, index, IndexRole::NeighbourGraph)->nearestOfEach(kNeighbours, neighbours, distance2);
+    std::vector<int64_t> fourth(n, 0);  // squared distance to the kNearest-th nearest, fixed point
+    for (size_t v = 0; v < n; ++v) {
+        size_t found = 0;
+        while (found < size_t(kNeighbours) && neighbours[v * kNeighbours + found] != kNoVertex) ++found;
+        if (found != 0) fourth[v] = distance2[v * kNeighbours + std::min<size_t>(kNearest, found) - 1];
+    }
+    {
+        // The typical distance to the kNearest-th nearest neighbour: it sizes the cells of the near-point search.
+        std::nth_element(fourth.begin(), fourth.begin() + n / 2, fourth.end());
+        *spacing = std::sqrt(double(fourth[n / 2])) / double(kSubUnits);
+    }
+    struct Edge {
+        int64_t length2;
+        uint32_t a, b;
+    };
+    auto length2 = [&](uint32_t a, uint32_t b) { return drm::distance2(gridPointOf(grid, a), gridPointOf(grid, b)); };
+    std::vector<Edge> edges;
+    edges.reserve(n * size_t(kNeighbours));
+    for (size_t v = 0; v < n; ++v)
+        for (int j = 0; j < kNeighbours; ++j) {
+            const uint32_t w = neighbours[v * kNeighbours + size_t(j)];
+            if (w == kNoVertex) continue;
+            // Mutual neighbours give the same edge twice: keep it once (the
+            // sort below is most of the tree's cost).
+            const uint32_t* theirs = neighbours.data() + size_t(w) * kNeighbours;
+            if (w < v && std::find(theirs, theirs + kNeighbours, uint32_t(v)) != theirs + kNeighbours) continue;
+            edges.push_back({length2(uint32_t(v), w), uint32_t(std::min<size_t>(v, w)), uint32_t(std::max<size_t>(v, w))});
+        }
+    std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+        return x.length2 != y.length2 ? x.length2 < y.length2 : (x.a != y.a ? x.a < y.a : x.b < y.b);
+    });
+    UnionFind sets(n);
+    std::vector<std::vector<std::pair<int64_t, uint32_t>>> adjacent(n);
+    for (const Edge& e : edges)
+        if (sets.join(e.a, e.b)) {
+            adjacent[e.a].push_back({e.length2, e.b});
+            adjacent[e.b].push_back({e.length2, e.a});
+        }
+    // Orient away from each component's first vertex (input order).
+    std::vector<uint8_t> seen(n, 0);
+    std::vector<uint32_t> stack;
+    for (size_t root = 0; root < n; ++root) {
+        if (seen[root]) continue;
+        seen[root] = 1;
+        stack.push_back(uint32_t(root));
+        while (!stack.empty()) {
+            const uint32_t v = stack.back();
+            stack.pop_back();
+            std::sort(adjacent[v].begin(), adjacent[v].end());
+            for (const auto& next : adjacent[v])
+                if (!seen[next.second]) {
+                    seen[next.second] = 1;
+                    children[v].push_back(next.second);
+                    stack.push_back(next.second);
+                }
+        }
+    }
+    return children;
+}
+
+// The encoder may visit children in any order; the first child of a vertex
+// is predicted by going straight on from its parent, so it should be the
+// child that lies most nearly straight on (others use sibling predictions).
+void orderChildrenForPrediction(const std::vector<int32_t>& grid, std::vector<std::vector<uint32_t>>& children) {
+    std::vector<uint32_t> parentOf(children.size(), kNoVertex);
+    for (size_t v = 0; v < children.size(); ++v)
+        for (uint32_t c : children[v]) parentOf[c] = uint32_t(v);
+    for (size_t v = 0; v < children.size(); ++v) {
+        if (parentOf[v] == kNoVertex || children[v].size() < 2) continue;
+        const GridPoint at = gridPointOf(grid, uint32_t(v));
+        const GridPoint straight = at + (at - gridPointOf(grid, parentOf[v]));
+        std::stable_sort(children[v].begin(), children[v].end(), [&](uint32_t a, uint32_t b) {
+            return residualCost(gridPointOf(grid, a) - straight) < residualCost(gridPointOf(grid, b) - straight);
+        });
+    }
+}
+
+// The depth-first preorder of the forest (roots in input order, children
+// nearest first), as input vertices.
+std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& children) {
+    const size_t n = children.size();
+    std::vector<uint8_t> isChild(n, 0);
+    for (const auto& list : children)
+        for (uint32_t c : list) isChild[c] = 1;
+    std::vector<uint32_t> order, stack;
+    order.reserve(n);
+    for (size_t root = 0; root < n; ++root) {
+        if (isChild[root]) continue;
+        stack.push_back(uint32_t(root));
+        while (!stack.empty()) {
+            const uint32_t v = stack.back();
+            stack.pop_back();
+            order.push_back(v);
+            for (size_t c = children[v].size(); c-- > 0;) stack.push_back(children[v][c]);
+        }
+    }
+    return order;
+}
+
+}  // namespace drm
