@@ -132,7 +132,7 @@ bool moveToFloatEdges(FuzzedDataProvider& in, drm::Mesh& m) {
     for (float& x : m.positions) {
         const float t = (x - lo) / span;  // 0 .. 1
         switch (how) {
-            case 1: x = -big + 2.0f * t * big; break;               // extent 2 * FLT_MAX: past float, not past double
+            case 1: x = float(-double(big) + 2.0 * double(t) * double(big)); break;  // extent 2 * FLT_MAX (in double: 2.0f * big is inf)
             case 2: x = t * big; break;                              // up to FLT_MAX itself
             case 3: x = t * 64.0f * std::numeric_limits<float>::denorm_min(); break;  // denormals, many equal
             case 4: x = 1e30f + t * 1e24f; break;                   // huge offset, tiny extent (many equal floats)
