@@ -404,7 +404,15 @@ AttributeEncoding encodeAttributeSections(const Mesh& in, const EncodeOptions& o
         addStrings(kMetadata, pairs, "metadata");
     }
 
-    if (layout.welded) {
+    bool anyWelded = false;
+    for (const AttributeValues& a : coded) anyWelded |= a.layout == AttributeLayout::WeldedVertex;
+    if (layout.welded && !anyWelded) {
+        // Welded with no per-vertex attribute to tell corners apart (--weld
+        // on): the decoder splits nothing, the welded vertices are the
+        // decoded ones.
+        result.splitTriangles = layout.triangles;
+        result.splitVertexInput = layout.vertexInput;
+    } else if (layout.welded) {
         std::vector<uint32_t> sourceCorner;
         splitVertices(
             layout.triangles, decodedVertices,

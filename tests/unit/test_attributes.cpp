@@ -240,3 +240,27 @@ TEST(Attributes, CorruptAttributeSectionsAreRefusedOrSound) {
 }
 
 }  // namespace
+
+namespace {
+
+// Found by the round-trip fuzzer: --weld on for a mesh whose attributes are
+// all per face (nothing tells corners apart) renumbered the vertices in the
+// encoder's report but not in the file.
+TEST(Attributes, WeldingWithOnlyFaceAttributesKeepsTheWeldedVertices) {
+    for (bool keepOrder : {false, true}) {
+        drm::Mesh m = drm_test::gridPatch(3, false);
+        m.faceMaterial.assign(m.faceCount(), 1);
+        m.materials = {"a", "b"};
+        drm::EncodeOptions o;
+        o.verify = true;
+        o.weld = drm::EncodeOptions::Weld::On;
+        o.keepVertexOrder = keepOrder;
+        const drm::Encoded e = drm::encode(m, o);
+        const drm::Decoded d = drm::decode(e.bytes);
+        ASSERT_EQ(d.mesh.vertexCount(), e.vertexOrder.size());
+        for (size_t v = 0; v < d.mesh.vertexCount(); ++v)
+            for (int k = 0; k < 3; ++k) EXPECT_EQ(d.quantized[3 * v + k], e.quantized[3 * e.vertexOrder[v] + k]);
+    }
+}
+
+}  // namespace
