@@ -99,18 +99,19 @@ private:
     static constexpr uint64_t kEmptyKey = ~uint64_t(0);
 
     static uint64_t pack(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
-    size_t next(size_t slot) const { return slot + 1 == keys_.size() ? 0 : slot + 1; }
+    size_t next(size_t slot) const { return slot + 1 == capacity_ ? 0 : slot + 1; }
     size_t home(uint64_t key) const {
         // Fibonacci hashing: the top bits of the product depend on every bit
         // of the key (its bits from 20 up, as before, ignored a in small
         // tables, so that all edges into one vertex shared a probe run).
         // (The product's top 32 bits scaled to the capacity, which need
         // not be a power of two.)
-        return size_t((((key * 0x9E3779B97F4A7C15ull) >> 32) * keys_.size()) >> 32);
+        return size_t((((key * 0x9E3779B97F4A7C15ull) >> 32) * capacity_) >> 32);
     }
     void setCapacity(size_t capacity) {  // >= 16, below 2^32
         keys_.assign(capacity, kEmptyKey);
         values_.assign(capacity, kAbsent);
+        capacity_ = capacity;
         size_ = 0;
     }
 
@@ -128,6 +129,7 @@ private:
     std::vector<uint64_t> keys_;
     std::vector<uint32_t> values_;
     size_t size_ = 0;
+    size_t capacity_ = 0;  // keys_.size(), kept for the look-ups' arithmetic
 };
 
 }  // namespace drm
