@@ -116,7 +116,7 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
         throw Error(ErrorKind::Corrupt, "corrupt file: decoded " + std::to_string(traversal.triangleCount()) + " faces, the header says " +
                     std::to_string(faceCount));
 
-    result.mesh.triangles = traversal.triangles();
+    result.mesh.triangles = traversal.takeTriangles();
     if (refine.lowBits > 0) {
         progress.stage("refining vertices", 0.95);
         std::vector<uint32_t> triangles = result.mesh.triangles;

@@ -67,6 +67,13 @@ public:
     void remove(uint32_t v) override;
     size_t presentCount() const override { return present_.size(); }
     void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const override;
+    void collectNearWithPoints(Vec3 q, double radius, std::vector<uint32_t>& out,
+                               std::vector<int32_t>& points) const override {
+        collectNear(q, radius, out);
+        points.resize(3 * out.size());
+        for (size_t i = 0; i < out.size(); ++i)
+            for (size_t k = 0; k < 3; ++k) points[3 * i + k] = grid_[3 * size_t(out[i]) + k];
+    }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
     void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) const override;
 

@@ -6,6 +6,7 @@
 #ifndef DRM_HALFEDGE_MAP_H
 #define DRM_HALFEDGE_MAP_H
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -21,17 +22,16 @@ public:
     explicit HalfEdgeMap(size_t expectedEdges = 16) { reset(expectedEdges); }
 
     void reset(size_t expectedEdges) {
-        size_t capacity = 16;
-        while (capacity < expectedEdges * 2) capacity *= 2;
-        keys_.assign(capacity, kEmptyKey);
-        values_.assign(capacity, kAbsent);
-        size_ = 0;
+        // Exactly twice the edges (not the next power of two, which would
+        // cost up to twice as much again: 43 bytes per vertex on a 1M-face
+        // mesh's input check).
+        setCapacity(std::max<size_t>(16, expectedEdges * 2));
     }
 
     // The value stored for (a, b), or kAbsent.
     uint32_t find(uint32_t a, uint32_t b) const {
         const uint64_t key = pack(a, b);
-        for (size_t slot = home(key);; slot = (slot + 1) & mask()) {
+        for (size_t slot = home(key);; slot = next(slot)) {
             if (keys_[slot] == key) return values_[slot];
             if (keys_[slot] == kEmptyKey) return kAbsent;
         }
@@ -45,7 +45,7 @@ public:
         if ((size_ + 1) * 2 > keys_.size()) grow();
         const uint64_t key = pack(a, b);
         size_t slot = home(key);
-        for (; keys_[slot] != kEmptyKey; slot = (slot + 1) & mask())
+        for (; keys_[slot] != kEmptyKey; slot = next(slot))
             if (keys_[slot] == key) return false;
         keys_[slot] = key;
         values_[slot] = value;
@@ -54,6 +54,44 @@ public:
     }
 
     size_t size() const { return size_; }
+    size_t capacity() const { return keys_.size(); }
+
+    // True when the next insert would grow the table: a caller that knows
+    // some entries will never be asked for again can drop them first
+    // (rebuildKeeping) instead.
+    bool full() const { return (size_ + 1) * 2 > keys_.size(); }
+
+    // Rebuilds the table with only the entries (a, b) for which keep(a, b)
+    // holds, at a capacity that leaves them at most an eighth of the slots
+    // (so the table is full again only after at least 3/8 of its slots
+    // have been inserted: sweeping costs O(1) per insert, amortized, and
+    // little, as it reads each slot once). Linear probing needs no
+    // tombstones this way; the dropped keys then answer kAbsent.
+    template <class Keep>
+    void rebuildKeeping(Keep keep) {
+        std::vector<uint64_t> keptKeys;
+        std::vector<uint32_t> keptValues;
+        keptKeys.reserve(size_);
+        keptValues.reserve(size_);
+        for (size_t i = 0; i < keys_.size(); ++i) {
+            const uint64_t key = keys_[i];
+            if (key != kEmptyKey && keep(uint32_t(key >> 32), uint32_t(key))) {
+                keptKeys.push_back(key);
+                keptValues.push_back(values_[i]);
+            }
+        }
+        const size_t capacity = std::max<size_t>(16, keptKeys.size() * 8);
+        std::vector<uint64_t>().swap(keys_);  // freed before the new table is made
+        std::vector<uint32_t>().swap(values_);
+        setCapacity(capacity);
+        for (size_t i = 0; i < keptKeys.size(); ++i) {
+            size_t slot = home(keptKeys[i]);
+            while (keys_[slot] != kEmptyKey) slot = next(slot);
+            keys_[slot] = keptKeys[i];
+            values_[slot] = keptValues[i];
+        }
+        size_ = keptKeys.size();
+    }
 
 private:
     // (a, b) with a == b never occurs (faces with a repeated index are
@@ -61,10 +99,20 @@ private:
     static constexpr uint64_t kEmptyKey = ~uint64_t(0);
 
     static uint64_t pack(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
-    size_t mask() const { return keys_.size() - 1; }
+    size_t next(size_t slot) const { return slot + 1 == capacity_ ? 0 : slot + 1; }
     size_t home(uint64_t key) const {
-        // Fibonacci hashing: the high bits of the product are well mixed.
-        return size_t((key * 0x9E3779B97F4A7C15ull) >> 20) & mask();
+        // Fibonacci hashing: the top bits of the product depend on every bit
+        // of the key (its bits from 20 up, as before, ignored a in small
+        // tables, so that all edges into one vertex shared a probe run).
+        // (The product's top 32 bits scaled to the capacity, which need
+        // not be a power of two.)
+        return size_t((((key * 0x9E3779B97F4A7C15ull) >> 32) * capacity_) >> 32);
+    }
+    void setCapacity(size_t capacity) {  // >= 16, below 2^32
+        keys_.assign(capacity, kEmptyKey);
+        values_.assign(capacity, kAbsent);
+        capacity_ = capacity;
+        size_ = 0;
     }
 
     void grow() {
@@ -72,9 +120,7 @@ private:
         std::vector<uint32_t> oldValues;
         oldKeys.swap(keys_);
         oldValues.swap(values_);
-        keys_.assign(oldKeys.size() * 2, kEmptyKey);
-        values_.assign(oldKeys.size() * 2, kAbsent);
-        size_ = 0;
+        setCapacity(oldKeys.size() * 2);
         for (size_t i = 0; i < oldKeys.size(); ++i)
             if (oldKeys[i] != kEmptyKey)
                 insert(uint32_t(oldKeys[i] >> 32), uint32_t(oldKeys[i]), oldValues[i]);
@@ -83,6 +129,7 @@ private:
     std::vector<uint64_t> keys_;
     std::vector<uint32_t> values_;
     size_t size_ = 0;
+    size_t capacity_ = 0;  // keys_.size(), kept for the look-ups' arithmetic
 };
 
 }  // namespace drm

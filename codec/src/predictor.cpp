@@ -91,12 +91,14 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
 
     double radius = 2.0 * std::max(height, edgeLength);
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
-        candidates_.collectNear(mid, radius, nearby_);
+        candidates_.collectNearWithPoints(mid, radius, nearby_, nearbyPoints_);
         double firstHeight = 0;
         uint32_t first = 0;
         bool found = false;
-        for (uint32_t v : nearby_) {
-            const Vec3 x = gridPoint(grid_, v) - mid;
+        for (size_t i = 0; i < nearby_.size(); ++i) {
+            const uint32_t v = nearby_[i];
+            const int32_t* at = nearbyPoints_.data() + 3 * i;  // gridPoint(grid_, v)
+            const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - mid;
             if (norm2(x) > radius * radius) continue;
             const double h = dot(x, ahead);
             if (h <= 0) continue;

@@ -57,6 +57,7 @@ private:
     const Admissibility& usable_;
     PredictorTuning tuning_;
     std::vector<uint32_t> nearby_;  // scratch, reused by every query
+    std::vector<int32_t> nearbyPoints_;  // their coordinates, 3 per vertex
 };
 
 }  // namespace drm

@@ -32,6 +32,10 @@ public:
     void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const override {
         cells_.collectNear(q, radius, out);
     }
+    void collectNearWithPoints(Vec3 q, double radius, std::vector<uint32_t>& out,
+                               std::vector<int32_t>& points) const override {
+        cells_.collectNear(q, radius, out, &points);
+    }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
     void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) const override;
 
@@ -78,6 +82,7 @@ void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter acce
     auto collect = [&](const uint32_t* first, size_t n) {
         for (size_t i = 0; i < n; ++i) candidates_.emplace_back(fixedDistance2(grid_, p, first[i]), first[i]);
     };
+    auto collectCell = [&](const uint32_t* first, const int32_t*, size_t n) { collect(first, n); };
     auto settle = [&](int64_t clear) {  // true once `count` accepted vertices are nearer than clear
         std::sort(candidates_.begin(), candidates_.end());
         out.clear();
@@ -102,7 +107,7 @@ void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter acce
             settle(INT64_MAX);
             return;
         }
-        cells_.forEachCellOfRing(p, ring, INT64_MAX, collect);
+        cells_.forEachCellOfRing(p, ring, INT64_MAX, collectCell);
         if (cells_.ringsCoverGrid(p, ring)) {
             settle(INT64_MAX);
             return;

@@ -74,6 +74,11 @@ public:
     // units), plus possibly some farther ones, in no particular order:
     // callers apply their own exact test. out is cleared first.
     virtual void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const = 0;
+    // The same vertices, with their grid coordinates: x, y, z of out[i] at
+    // points[3 i] (the grid keeps them with its cells, so the caller's loop
+    // reads them in order instead of looking each up).
+    virtual void collectNearWithPoints(Vec3 q, double radius, std::vector<uint32_t>& out,
+                                       std::vector<int32_t>& points) const = 0;
 
     // The `count` present vertices nearest p that accept takes, exactly:
     // (fixedDistance2, vertex) in increasing order (ties by index); fewer

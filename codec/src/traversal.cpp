@@ -1,5 +1,6 @@
 #include "traversal.h"
 
+#include <algorithm>
 #include <string>
 
 #include "drm/drm.h"
@@ -11,7 +12,7 @@ uint64_t packEdge(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 }  // namespace
 
 Traversal::Traversal(size_t vertexCount, size_t expectedFaces, SpatialIndex* candidates)
-    : halfEdges_(3 * expectedFaces + 16), openEdges_(vertexCount, 0), state_(vertexCount, kUntouched),
+    : halfEdges_(std::min<size_t>(3 * expectedFaces + 16, kFirstHalfEdges)), openEdges_(vertexCount, 0), state_(vertexCount, kUntouched),
       candidates_(candidates) {
     triangles_.reserve(3 * expectedFaces);
 }
@@ -42,6 +43,9 @@ bool Traversal::popOpenEdge(OpenEdge& edge) {
         const uint64_t packed = queue_.front();
         queue_.pop_front();
         const uint32_t vi = uint32_t(packed >> 32), vj = uint32_t(packed);
+        // Every edge at a culled vertex is closed (it has no open edge
+        // left); the table may have dropped it (insertHalfEdge).
+        if (state_[vi] == kCulled || state_[vj] == kCulled) continue;
         if (halfEdges_.contains(vj, vi)) continue;  // closed: a triangle or a boundary code is there
         edge.vi = vi;
         edge.vj = vj;
@@ -52,7 +56,7 @@ bool Traversal::popOpenEdge(OpenEdge& edge) {
 }
 
 void Traversal::closeAsBoundary(const OpenEdge& edge) {
-    halfEdges_.insert(edge.vj, edge.vi, kBoundary);
+    insertHalfEdge(edge.vj, edge.vi, kBoundary);
     --openEdges_[edge.vi];
     --openEdges_[edge.vj];
     releaseIfDone(edge.vi);
@@ -90,7 +94,20 @@ void Traversal::addHalfEdge(uint32_t a, uint32_t b, uint32_t opposite) {
         ++openEdges_[a];
         ++openEdges_[b];
     }
-    halfEdges_.insert(a, b, opposite);
+    insertHalfEdge(a, b, opposite);
+}
+
+void Traversal::insertHalfEdge(uint32_t a, uint32_t b, uint32_t value) {
+    // An edge between two culled vertices is never asked for again: every
+    // look-up is about an edge at an active vertex (an open edge's ends, the
+    // fans around them, a candidate apex), and popOpenEdge skips edges at
+    // culled vertices. So when the table fills up, it first drops those:
+    // it then holds about the traversal's front, not the whole mesh (on
+    // igea subdivided once, 1.07M triangles: a few thousand slots instead
+    // of 8M, 96 MB).
+    if (halfEdges_.full())
+        halfEdges_.rebuildKeeping([this](uint32_t x, uint32_t y) { return state_[x] != kCulled || state_[y] != kCulled; });
+    halfEdges_.insert(a, b, value);
 }
 
 void Traversal::releaseIfDone(uint32_t v) {

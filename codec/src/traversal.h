@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <utility>
 #include <vector>
 
 #include "halfedge_map.h"
@@ -63,12 +64,22 @@ public:
 
     // Rebuilt triangles, in the order they were inserted.
     const std::vector<uint32_t>& triangles() const { return triangles_; }
+    // Hands them over at the end, trimmed to their size (the decoder's
+    // table grew by doubling from a bounded guess); the traversal is done
+    // with then.
+    std::vector<uint32_t> takeTriangles() {
+        triangles_.shrink_to_fit();
+        return std::move(triangles_);
+    }
     size_t triangleCount() const { return triangles_.size() / 3; }
 
 private:
     enum : uint8_t { kUntouched = 0, kActive = 1, kCulled = 2 };
 
     void addHalfEdge(uint32_t a, uint32_t b, uint32_t opposite);
+    void insertHalfEdge(uint32_t a, uint32_t b, uint32_t value);
+    // The half-edge table's first capacity: it grows with the front.
+    static constexpr size_t kFirstHalfEdges = 4096;
     void releaseIfDone(uint32_t v);
 
     // Directed edge (a, b) -> the third vertex of its triangle, or kBoundary

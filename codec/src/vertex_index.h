@@ -39,7 +39,8 @@ public:
     // Appends to out every present vertex whose distance from q is at most
     // radius (grid units), plus possibly some farther ones: callers apply
     // their own exact test. out is cleared first.
-    void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const;
+    // points, if given, gets x, y, z of out[i] at 3 i (cleared first).
+    void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out, std::vector<int32_t>* points = nullptr) const;
 
     // Rings of cells around a fixed-point location, for exact nearest
     // searches: ring r holds the cells at Chebyshev cell distance r from the
@@ -50,8 +51,9 @@ public:
     // budget, scanning every present vertex (collectAll) is cheaper.
     static uint64_t ringCellCount(int ring);
     uint64_t cellBudget() const;
-    // Calls visit(first, count) with the present vertices of each cell of
-    // the ring that has a point within squared fixed-point distance bound2
+    // Calls visit(first, points, count) with the present vertices of each
+    // cell of the ring (points: their x, y, z, 3 per vertex, stored with
+    // them so that distances need no look-up elsewhere) that has a point within squared fixed-point distance bound2
     // of p (cells farther away cannot hold anything nearer).
     template <class Visit>
     void forEachCellOfRing(const FixedPoint& p, int ring, int64_t bound2, Visit visit) const;
@@ -100,7 +102,9 @@ private:
             if (z > z1) break;
             if (z < z0 || (capsOnly && z != z0 && z != z1) || cellPresent_[c] == 0) continue;
             const int64_t gz = gap(p.z, z);
-            if (xy2 + gz * gz <= bound2) visit(slots_.data() + cellStart_[c], size_t(cellPresent_[c]));
+            if (xy2 + gz * gz <= bound2)
+                visit(slots_.data() + cellStart_[c], slotPoints_.data() + 3 * size_t(cellStart_[c]),
+                      size_t(cellPresent_[c]));
         }
     }
 
@@ -115,9 +119,15 @@ private:
     // extent of the box.
     static constexpr uint32_t kNoColumn = 0xFFFFFFFFu;
     static uint64_t columnKey(int64_t x, int64_t y) { return (uint64_t(x) << 32) | uint64_t(y); }
-    uint32_t findColumn(int64_t x, int64_t y) const;  // kNoColumn if empty or outside
+    uint32_t findColumn(int64_t x, int64_t y) const {  // kNoColumn if empty or outside
+        if (x < 0 || y < 0 || x > lastCell_ || y > lastCell_) return kNoColumn;
+        if (!denseColumns_.empty()) return denseColumns_[size_t(x * (lastCell_ + 1) + y)];
+        return findHashedColumn(x, y);
+    }
+    uint32_t findHashedColumn(int64_t x, int64_t y) const;
     size_t findColumnSlot(uint64_t key) const;
     std::vector<uint32_t> columnTable_;
+    std::vector<uint32_t> denseColumns_;  // column of (x, y) at x * (lastCell_ + 1) + y, when the box allows
     int columnBits_ = 0;
     std::vector<uint64_t> columnKeys_;
     std::vector<uint32_t> columnCells_;
@@ -126,6 +136,7 @@ private:
     // cellStart_[c] + cellPresent_[c]): present ones first.
     std::vector<uint32_t> cellStart_, cellPresent_;
     std::vector<uint32_t> slots_, slotOf_, cellOfVertex_;
+    std::vector<int32_t> slotPoints_;  // x, y, z of slots_[i] at 3 i: the cells' vertices are read in order
     // Every present vertex, for searches that would visit more cells than
     // there are vertices left.
     std::vector<uint32_t> present_, presentSlot_;
@@ -156,15 +167,25 @@ void VertexIndex::nearestFew(const FixedPoint& p, size_t count, Distance distanc
     // Once there are `count`, cells and vertices farther than the last are
     // skipped.
     int64_t bound = INT64_MAX;
-    auto visit = [&](const uint32_t* first, size_t n) {
-        for (size_t i = 0; i < n; ++i) {
-            const std::pair<int64_t, uint32_t> c{distance2(first[i]), first[i]};
-            if (c.first > bound || (out.size() == count && !(c < out.back()))) continue;
-            if (!accept(c.second)) continue;
-            out.insert(std::upper_bound(out.begin(), out.end(), c), c);
-            if (out.size() > count) out.pop_back();
-            if (out.size() == count) bound = out.back().first;
+    auto consider = [&](const std::pair<int64_t, uint32_t>& c) {
+        if (c.first > bound || (out.size() == count && !(c < out.back()))) return;
+        if (!accept(c.second)) return;
+        out.insert(std::upper_bound(out.begin(), out.end(), c), c);
+        if (out.size() > count) out.pop_back();
+        if (out.size() == count) bound = out.back().first;
+    };
+    auto visit = [&](const uint32_t* first, const int32_t* points, size_t n) {
+        for (size_t i = 0; i < n; ++i, points += 3) {
+            // fixedDistance2, from the coordinates stored in the cell.
+            const int64_t dx = int64_t(points[0]) * kSubUnits - p.x, dy = int64_t(points[1]) * kSubUnits - p.y,
+                          dz = int64_t(points[2]) * kSubUnits - p.z;
+            const int64_t d2 = dx * dx + dy * dy + dz * dz;
+            if (d2 > bound) continue;
+            consider({d2, first[i]});
         }
+    };
+    auto visitIds = [&](const uint32_t* first, size_t n) {
+        for (size_t i = 0; i < n; ++i) consider({distance2(first[i]), first[i]});
     };
     uint64_t cellsVisited = 0;
     for (int ring = firstRing(p);; ++ring) {
@@ -174,7 +195,7 @@ void VertexIndex::nearestFew(const FixedPoint& p, size_t count, Distance distanc
             bound = INT64_MAX;
             scratch.clear();
             collectAll(scratch);
-            visit(scratch.data(), scratch.size());
+            visitIds(scratch.data(), scratch.size());
             return;
         }
         forEachCellOfRing(p, ring, bound, visit);

@@ -5,7 +5,9 @@
 #include "drm_vcg/mesh_io.h"
 #include "mesh_checks.h"
 
+#include <cstdint>
 #include <cstring>
+#include <ostream>
 #include <string>
 
 namespace drm {
@@ -13,15 +15,38 @@ namespace vcgio {
 
 namespace {
 
-void appendLittleEndian32(std::string& out, uint32_t value) {
-    for (int byte = 0; byte < 4; ++byte) out.push_back(char((value >> (8 * byte)) & 0xFF));
-}
+// The body goes out in blocks, not as one string of the whole file: a
+// decoded 1M-triangle mesh would otherwise hold another 38 bytes per vertex
+// at the peak.
+class BlockWriter {
+public:
+    explicit BlockWriter(std::ostream& out) : out_(out) {}
+    ~BlockWriter() { flush(); }
+    void byte(uint8_t value) {
+        if (used_ == sizeof buffer_) flush();
+        buffer_[used_++] = char(value);
+    }
+    void littleEndian32(uint32_t value) {
+        if (used_ + 4 > sizeof buffer_) flush();
+        const unsigned char bytes[4] = {uint8_t(value), uint8_t(value >> 8), uint8_t(value >> 16), uint8_t(value >> 24)};
+        std::memcpy(buffer_ + used_, bytes, 4);
+        used_ += 4;
+    }
+    void float32(float value) {
+        uint32_t bits;
+        std::memcpy(&bits, &value, sizeof bits);
+        littleEndian32(bits);
+    }
+    void flush() {
+        out_.write(buffer_, std::streamsize(used_));
+        used_ = 0;
+    }
 
-void appendFloat(std::string& out, float value) {
-    uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    appendLittleEndian32(out, bits);
-}
+private:
+    std::ostream& out_;
+    char buffer_[1 << 16];
+    size_t used_ = 0;
+};
 
 void checkFaceAttributes(const std::string& path, const drm::Mesh& mesh, const FaceAttributes* attrs) {
     const size_t faces = mesh.faceCount();
@@ -78,38 +103,35 @@ std::vector<std::string> savePly(const std::string& path, const drm::Mesh& mesh,
     if (withFaceQuality) header += "property float quality\n";
     header += "end_header\n";
 
-    std::string body;
-    body.reserve(12 * mesh.vertexCount() + 17 * mesh.faceCount());
-    for (size_t i = 0; i < mesh.vertexCount(); ++i) {
-        for (int k = 0; k < 3; ++k) appendFloat(body, mesh.positions[3 * i + size_t(k)]);
-        if (withNormals)
-            for (int k = 0; k < 3; ++k) appendFloat(body, mesh.normals[3 * i + size_t(k)]);
-        if (withColours)
-            for (int k = 0; k < 4; ++k) body.push_back(char(mesh.colors[4 * i + size_t(k)]));
-        if (withQuality) appendFloat(body, mesh.quality[i]);
-        if (withTexCoords)
-            for (int k = 0; k < 2; ++k) appendFloat(body, mesh.texCoords[2 * i + size_t(k)]);
-    }
-    for (size_t f = 0; f < mesh.faceCount(); ++f) {
-        body.push_back(char(3));
-        for (int k = 0; k < 3; ++k) appendLittleEndian32(body, mesh.triangles[3 * f + size_t(k)]);
-        if (withCornerTexCoords) {
-            body.push_back(char(6));
-            for (int k = 0; k < 6; ++k) appendFloat(body, mesh.cornerTexCoords[6 * f + size_t(k)]);
-        }
-        if (withTexNumber) appendLittleEndian32(body, mesh.faceTexture[f]);
-        if (rankColours) {
-            for (int k = 0; k < 3; ++k) body.push_back(char(attrs->rgb[3 * f + size_t(k)]));
-        } else if (withFaceColours) {
-            for (int k = 0; k < 4; ++k) body.push_back(char(mesh.faceColors[4 * f + size_t(k)]));
-        }
-        if (rankQuality) appendFloat(body, attrs->quality[f]);
-        else if (withFaceQuality) appendFloat(body, mesh.faceQuality[f]);
-    }
-
     writeFileAtomically(path, [&](std::ostream& out) {
         out.write(header.data(), std::streamsize(header.size()));
-        out.write(body.data(), std::streamsize(body.size()));
+        BlockWriter body(out);
+        for (size_t i = 0; i < mesh.vertexCount(); ++i) {
+            for (int k = 0; k < 3; ++k) body.float32(mesh.positions[3 * i + size_t(k)]);
+            if (withNormals)
+                for (int k = 0; k < 3; ++k) body.float32(mesh.normals[3 * i + size_t(k)]);
+            if (withColours)
+                for (int k = 0; k < 4; ++k) body.byte(mesh.colors[4 * i + size_t(k)]);
+            if (withQuality) body.float32(mesh.quality[i]);
+            if (withTexCoords)
+                for (int k = 0; k < 2; ++k) body.float32(mesh.texCoords[2 * i + size_t(k)]);
+        }
+        for (size_t f = 0; f < mesh.faceCount(); ++f) {
+            body.byte(3);
+            for (int k = 0; k < 3; ++k) body.littleEndian32(mesh.triangles[3 * f + size_t(k)]);
+            if (withCornerTexCoords) {
+                body.byte(6);
+                for (int k = 0; k < 6; ++k) body.float32(mesh.cornerTexCoords[6 * f + size_t(k)]);
+            }
+            if (withTexNumber) body.littleEndian32(mesh.faceTexture[f]);
+            if (rankColours) {
+                for (int k = 0; k < 3; ++k) body.byte(attrs->rgb[3 * f + size_t(k)]);
+            } else if (withFaceColours) {
+                for (int k = 0; k < 4; ++k) body.byte(mesh.faceColors[4 * f + size_t(k)]);
+            }
+            if (rankQuality) body.float32(attrs->quality[f]);
+            else if (withFaceQuality) body.float32(mesh.faceQuality[f]);
+        }
     });
 
     std::vector<std::string> notes;

@@ -1,0 +1,67 @@
+// HalfEdgeMap against std::map: inserts, look-ups of present and absent
+// edges, growth, and rebuildKeeping (the traversal drops the edges between
+// culled vertices with it), on random edges with many sharing an end vertex
+// (as edges around one vertex do).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <random>
+#include <utility>
+
+#include "halfedge_map.h"
+
+namespace drm {
+namespace {
+
+TEST(HalfEdgeMap, AgreesWithStdMapThroughGrowthAndRebuilds) {
+    std::mt19937 random(13);
+    HalfEdgeMap table(4);
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> truth;
+    auto checkAll = [&](uint32_t range) {
+        for (const auto& entry : truth) ASSERT_EQ(table.find(entry.first.first, entry.first.second), entry.second);
+        for (int i = 0; i < 2000; ++i) {
+            const uint32_t a = random() % range, b = random() % range;
+            const auto it = truth.find({a, b});
+            ASSERT_EQ(table.find(a, b), it == truth.end() ? HalfEdgeMap::kAbsent : it->second);
+        }
+        ASSERT_EQ(table.size(), truth.size());
+        ASSERT_LE(2 * table.size(), table.capacity());
+    };
+    for (int round = 0; round < 6; ++round) {
+        const uint32_t range = 64u << (2 * round);  // also vertices near 2^32 below
+        for (int i = 0; i < 3000; ++i) {
+            uint32_t a = random() % range, b = random() % 8;  // many edges into few vertices
+            if (i % 3 == 0) std::swap(a, b);
+            if (i % 7 == 0) a = 0xFFFFFFF0u + a % 8;
+            if (a == b) continue;
+            const uint32_t value = random() % 1000;
+            const bool fresh = truth.emplace(std::make_pair(a, b), value).second;
+            ASSERT_EQ(table.insert(a, b, value), fresh);
+        }
+        checkAll(range);
+        // Drop the edges whose ends are both odd, as the traversal drops
+        // those between culled vertices.
+        auto keep = [&](uint32_t a, uint32_t b) { return a % 2 == 0 || b % 2 == 0 || round % 2 == 1; };
+        table.rebuildKeeping(keep);
+        for (auto it = truth.begin(); it != truth.end();)
+            it = keep(it->first.first, it->first.second) ? std::next(it) : truth.erase(it);
+        ASSERT_LE(8 * table.size(), std::max<size_t>(table.capacity(), 16));
+        checkAll(range);
+    }
+}
+
+TEST(HalfEdgeMap, RebuildKeepingNothingEmptiesTheTable) {
+    HalfEdgeMap table(100);
+    for (uint32_t v = 1; v < 100; ++v) table.insert(0, v, v);
+    table.rebuildKeeping([](uint32_t, uint32_t) { return false; });
+    EXPECT_EQ(table.size(), 0u);
+    EXPECT_EQ(table.capacity(), 16u);
+    for (uint32_t v = 1; v < 100; ++v) EXPECT_EQ(table.find(0, v), HalfEdgeMap::kAbsent);
+    EXPECT_TRUE(table.insert(0, 1, 7));
+    EXPECT_EQ(table.find(0, 1), 7u);
+}
+
+}  // namespace
+}  // namespace drm
