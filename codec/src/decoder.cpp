@@ -150,31 +150,18 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
     if (!parts.attributes.empty()) {
         progress.stage("decoding attributes", 0.97);
         decodeAttributeSections(parts, result);
-        stats.attributeBytes = parts.attributeBytes;
     }
     size_t badVertex = 0;
     if (!dequantize(result.quantized, header.grid, result.mesh.positions, &badVertex))
         throw Error(ErrorKind::Corrupt, "corrupt file: vertex " + std::to_string(badVertex) +
                     " lies outside the range of single-precision floats");
 
+    fillStatsFromHeader(stats, parts, size);  // leaves the decoded figures (ranks, repairs, attributes) alone
     stats.vertices = result.mesh.vertexCount();  // the file's vertices, or the split ones of a welded mesh
-    stats.faces = header.faceCount;
     stats.components = components;
     stats.boundaryEdges = stats.rankHistogram.empty() ? 0 : stats.rankHistogram[0];
-    stats.bits = header.grid.bits;
-    stats.predictor = header.predictor;
-    stats.curvature = header.curvature;
-    stats.levers = header.levers;
-    stats.headerBytes = parts.headerBytes;
-    stats.connectivityBytes = parts.connectivitySize;
-    stats.geometryBytes = parts.geometrySize;
-    stats.geometry = header.geometryCoder;
     stats.refineBits = refine.lowBits;
-    stats.vertexOrderBytes = parts.vertexOrderSize;
-    stats.repairBytes = parts.repairsSize;
-    stats.splitVertices = copyOf.size();
     stats.looseFaces = looseCount;
-    stats.totalBytes = size;
     progress.stage("done", 1.0);
     return result;
 }

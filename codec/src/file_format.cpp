@@ -201,4 +201,24 @@ FileParts readFile(const uint8_t* data, size_t size) {
     return parts;
 }
 
+void fillStatsFromHeader(Stats& stats, const FileParts& parts, size_t fileSize) {
+    const FileHeader& header = parts.header;
+    stats.vertices = header.vertexCount;
+    stats.faces = header.faceCount;
+    stats.components = header.startTriangles.size() / 3;
+    stats.bits = header.grid.bits;
+    stats.predictor = header.predictor;
+    stats.curvature = header.curvature;
+    stats.levers = header.levers;
+    stats.geometry = header.geometryCoder;
+    stats.headerBytes = parts.headerBytes;
+    stats.connectivityBytes = parts.connectivitySize;
+    stats.geometryBytes = parts.geometrySize;
+    stats.vertexOrderBytes = parts.vertexOrderSize;
+    stats.repairBytes = parts.repairsSize;
+    stats.splitVertices = header.copyCount;
+    stats.attributeBytes = parts.attributes.empty() ? 0 : parts.attributeBytes;
+    stats.totalBytes = fileSize;
+}
+
 }  // namespace drm

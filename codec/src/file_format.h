@@ -82,6 +82,12 @@ std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8
                                const std::vector<uint8_t>& repairs,
                                const std::vector<std::vector<uint8_t>>& attributes, size_t* headerBytes);
 
+// The figures of Stats that the header and section table give (counts,
+// options, section sizes, total), shared by inspect() and decode(); those
+// that need a payload decoded (ranks, refine bits, attribute names, decoded
+// vertex count) are the caller's.
+void fillStatsFromHeader(Stats& stats, const FileParts& parts, size_t fileSize);
+
 // Checks signature, version, section lengths and checksums, and every header
 // field's range; the payloads are returned as pointers into data.
 FileParts readFile(const uint8_t* data, size_t size);

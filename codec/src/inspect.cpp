@@ -16,26 +16,11 @@ FileInfo inspect(const uint8_t* data, size_t size) {
     info.keepsVertexOrder = header.keepsVertexOrder;
     info.hasRepairs = header.hasRepairs;
     Stats& stats = info.stats;
-    stats.vertices = header.vertexCount;
-    stats.faces = header.faceCount;
-    stats.components = header.startTriangles.size() / 3;
-    stats.bits = header.grid.bits;
-    stats.predictor = header.predictor;
-    stats.curvature = header.curvature;
-    stats.levers = header.levers;
-    stats.geometry = header.geometryCoder;
+    fillStatsFromHeader(stats, parts, size);
     if (header.geometryCoder == GeometryCoder::Refine)
         stats.refineBits = readRefinePayload(parts.geometry, parts.geometrySize, header.grid.bits).lowBits;
-    stats.headerBytes = parts.headerBytes;
-    stats.connectivityBytes = parts.connectivitySize;
-    stats.geometryBytes = parts.geometrySize;
-    stats.vertexOrderBytes = parts.vertexOrderSize;
-    stats.repairBytes = parts.repairsSize;
-    stats.splitVertices = header.copyCount;
     for (const FileParts::Payload& p : parts.attributes)
         stats.attributeSizes.push_back({attributeSectionName(p.data, p.size), p.size});
-    stats.attributeBytes = parts.attributes.empty() ? 0 : parts.attributeBytes;
-    stats.totalBytes = size;
     return info;
 }
 
