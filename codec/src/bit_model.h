@@ -34,6 +34,9 @@ public:
         return bit;
     }
 
+    // Learns `bit` without coding it (an encoder rehearsing its choices).
+    void observe(int bit) { update(bit); }
+
     // The encoder's estimate of the cost of coding `bit`, in bits.
     double cost(int bit) const {
         const uint32_t p1 = probabilityOfOne();
@@ -78,6 +81,14 @@ struct Writer {
     uint32_t plain(uint32_t v, int count) { coder.encodeWideBits(v, count); return v & uint32_t((uint64_t(1) << count) - 1); }
     uint64_t wide(uint64_t v, int count) { coder.encodeWideBits(v, count); return count >= 64 ? v : v & ((uint64_t(1) << count) - 1); }
     uint32_t symbol(AdaptiveFrequencies& m, uint32_t s) { m.encode(coder, s); return s; }
+};
+// An encoder's rehearsal: the models learn exactly as through a Writer,
+// nothing is written (to try an order of coding before committing to it).
+struct Rehearsal {
+    static constexpr bool kEncoding = true;
+    int bit(BitModel& m, int b) { m.observe(b); return b; }
+    uint32_t plain(uint32_t v, int count) { return v & uint32_t((uint64_t(1) << count) - 1); }
+    uint32_t symbol(AdaptiveFrequencies& m, uint32_t s) { m.observe(s); return s; }
 };
 struct Reader {
     RangeDecoder& coder;

@@ -1,5 +1,4 @@
-// The vertex set coder: a spanning tree over near neighbours, walked depth
-// first; each vertex is coded as the residual from a prediction the decoder
+// The vertex set coder: a tree over near neighbours, walked depth first; each vertex is coded as the residual from a prediction the decoder
 // can rebuild from vertices it already has (parent, grandparent, siblings,
 // the previous tree edge), the encoder picking the best and coding which.
 // This is the family the method notes measured best among connectivity-free
@@ -22,8 +21,13 @@ struct GeometryEncoding {
     std::vector<uint32_t> order;  // order[i] = input index of decoded vertex i
 };
 
+// Which tree the encoder builds: by default both, keeping the smaller
+// section (the decoder reads either the same way).
+enum class GeometryTree { Smaller, CheapestFirst, SpanningTree };
+
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
-                                    NeighbourIndex index = NeighbourIndex::Auto);
+                                    NeighbourIndex index = NeighbourIndex::Auto,
+                                    GeometryTree tree = GeometryTree::Smaller);
 
 // Throws Error on data that does not decode to exactly vertexCount vertices
 // on the grid.

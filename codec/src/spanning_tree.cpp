@@ -19,45 +19,88 @@ uint64_t residualCost(GridPoint r) {  // Exp-Golomb length, to pick the predicto
 
 }  // namespace
 
-// Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
-// children nearest first.
-std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, NeighbourIndex index,
-                                                  double* spacing) {
+NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourIndex index, int k) {
     const size_t n = grid.size() / 3;
-    std::vector<std::vector<uint32_t>> children(n);
-    *spacing = 1;
-    if (n < 2) return children;
-    // The kNeighbours nearest of every vertex, exactly, on the integer grid
-    // (either index gives the same graph).
-    std::vector<uint32_t> neighbours;
+    NearestNeighbours result;
+    result.k = k;
+    result.spacing = 1;
+    if (n < 2) {
+        result.neighbours.assign(n * size_t(k), kNoVertex);
+        return result;
+    }
+    // Exactly, on the integer grid (either index gives the same graph).
     std::vector<int64_t> distance2;
-    makeSpatialIndex(grid, index, IndexRole::NeighbourGraph)->nearestOfEach(kNeighbours, neighbours, distance2);
+    makeSpatialIndex(grid, index, IndexRole::NeighbourGraph)->nearestOfEach(size_t(k), result.neighbours, distance2);
     std::vector<int64_t> fourth(n, 0);  // squared distance to the kNearest-th nearest, fixed point
     for (size_t v = 0; v < n; ++v) {
         size_t found = 0;
-        while (found < size_t(kNeighbours) && neighbours[v * kNeighbours + found] != kNoVertex) ++found;
-        if (found != 0) fourth[v] = distance2[v * kNeighbours + std::min<size_t>(kNearest, found) - 1];
+        while (found < size_t(k) && result.neighbours[v * size_t(k) + found] != kNoVertex) ++found;
+        if (found != 0) fourth[v] = distance2[v * size_t(k) + std::min<size_t>(kNearest, found) - 1];
     }
-    {
-        // The typical distance to the kNearest-th nearest neighbour: it sizes the cells of the near-point search.
-        std::nth_element(fourth.begin(), fourth.begin() + n / 2, fourth.end());
-        *spacing = std::sqrt(double(fourth[n / 2])) / double(kSubUnits);
+    // The typical distance to the kNearest-th nearest neighbour: it sizes the cells of the near-point search.
+    std::nth_element(fourth.begin(), fourth.begin() + ptrdiff_t(n / 2), fourth.end());
+    result.spacing = std::sqrt(double(fourth[n / 2])) / double(kSubUnits);
+    return result;
+}
+
+NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count) {
+    const size_t row = size_t(nearest.k), n = nearest.neighbours.size() / std::max<size_t>(row, 1);
+    const size_t k = std::min<size_t>(size_t(count), row);
+    NeighbourGraph graph;
+    graph.offset.assign(n + 1, 0);
+    auto mutual = [&](uint32_t v, uint32_t w) {  // v is among w's nearest as well
+        const uint32_t* theirs = nearest.neighbours.data() + size_t(w) * row;
+        return std::find(theirs, theirs + k, v) != theirs + k;
+    };
+    // Each edge once per end: v's own nearest, then those that have v among
+    // theirs without being among v's.
+    for (int pass = 0; pass < 2; ++pass) {
+        std::vector<uint32_t> fill;
+        if (pass == 1) {
+            for (size_t v = 0; v < n; ++v) graph.offset[v + 1] += graph.offset[v];
+            graph.neighbour.resize(graph.offset[n]);
+            fill.assign(graph.offset.begin(), graph.offset.end() - 1);
+        }
+        for (size_t v = 0; v < n; ++v)
+            for (size_t j = 0; j < k; ++j) {
+                const uint32_t w = nearest.neighbours[v * row + j];
+                if (w == kNoVertex) break;
+                const bool alsoBack = !mutual(uint32_t(v), w);
+                if (pass == 0) {
+                    ++graph.offset[v + 1];
+                    if (alsoBack) ++graph.offset[w + 1];
+                } else {
+                    graph.neighbour[fill[v]++] = w;
+                    if (alsoBack) graph.neighbour[fill[w]++] = uint32_t(v);
+                }
+            }
     }
+    return graph;
+}
+
+// Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
+// children nearest first.
+std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
+    const size_t n = grid.size() / 3;
+    std::vector<std::vector<uint32_t>> children(n);
+    const std::vector<uint32_t>& neighbours = nearest.neighbours;
+    const size_t k = size_t(nearest.k);
+    if (n < 2) return children;
     struct Edge {
         int64_t length2;
         uint32_t a, b;
     };
     auto length2 = [&](uint32_t a, uint32_t b) { return drm::distance2(gridPointOf(grid, a), gridPointOf(grid, b)); };
     std::vector<Edge> edges;
-    edges.reserve(n * size_t(kNeighbours));
+    edges.reserve(n * k);
     for (size_t v = 0; v < n; ++v)
-        for (int j = 0; j < kNeighbours; ++j) {
-            const uint32_t w = neighbours[v * kNeighbours + size_t(j)];
+        for (size_t j = 0; j < k; ++j) {
+            const uint32_t w = neighbours[v * k + j];
             if (w == kNoVertex) continue;
             // Mutual neighbours give the same edge twice: keep it once (the
             // sort below is most of the tree's cost).
-            const uint32_t* theirs = neighbours.data() + size_t(w) * kNeighbours;
-            if (w < v && std::find(theirs, theirs + kNeighbours, uint32_t(v)) != theirs + kNeighbours) continue;
+            const uint32_t* theirs = neighbours.data() + size_t(w) * k;
+            if (w < v && std::find(theirs, theirs + k, uint32_t(v)) != theirs + k) continue;
             edges.push_back({length2(uint32_t(v), w), uint32_t(std::min<size_t>(v, w)), uint32_t(std::max<size_t>(v, w))});
         }
     std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {

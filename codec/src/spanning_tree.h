@@ -15,11 +15,29 @@ namespace drm {
 
 constexpr int kNeighbours = 8;  // spanning tree over the 8-nearest-neighbour graph
 
-// Minimum spanning forest of the kNeighbours-nearest-neighbour graph of the
-// grid points, as child lists, children nearest first; *spacing is set to
-// the typical distance to the kNearest-th neighbour (grid steps).
-std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, NeighbourIndex index,
-                                                  double* spacing);
+// The k nearest neighbours of every grid point (kNoVertex-padded rows of k,
+// nearest first, ties by index) and the typical distance to the
+// kNearest-th of them (grid steps), which sizes the coders' cells.
+struct NearestNeighbours {
+    int k = 0;
+    std::vector<uint32_t> neighbours;  // k per vertex
+    double spacing = 1;
+};
+NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourIndex index, int k);
+
+// The symmetric count-nearest-neighbour graph (v and w joined when either
+// is among the other's `count` nearest; count <= nearest.k), compressed rows: the neighbours of v are
+// neighbour[offset[v] .. offset[v + 1]), v's own nearest first.
+struct NeighbourGraph {
+    std::vector<uint32_t> offset, neighbour;
+    const uint32_t* begin(uint32_t v) const { return neighbour.data() + offset[v]; }
+    const uint32_t* end(uint32_t v) const { return neighbour.data() + offset[size_t(v) + 1]; }
+};
+NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count);
+
+// Minimum spanning forest of the nearest-neighbour graph (all nearest.k
+// of each vertex), as child lists, children nearest first.
+std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest);
 
 // Puts first, among each vertex's children, the one lying most nearly
 // straight on from its parent (the first child is predicted that way).
