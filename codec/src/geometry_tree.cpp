@@ -85,21 +85,34 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     return p;
 }
 
-// The encoder's pick: the candidate whose residual and choice cost least
-// under the current models, and that cost in bits. (Floating point is fine
+// What coding the next vertex from each candidate costs under the current
+// models, in bits: the residual per axis by its bit length, and naming the
+// candidate. Built once per step of the encoder, which then prices the
+// candidates of every vertex it might code next. (Floating point is fine
 // here: the choice is transmitted, the decoder never repeats this.)
+struct Pricing {
+    ResidualCosts axis[3];
+    double choice[kMaxCandidates];
+    int count;
+    Pricing(const CodingState& s, const Predictions& p, const AdaptiveFrequencies& choiceModel, const int* contexts)
+        : count(p.count) {
+        for (int a = 0; a < 3; ++a) axis[a] = ResidualCosts(s.axis[a], contexts[a]);
+        const double total = choiceModel.totalCount();
+        for (int c = 0; c < count; ++c) choice[c] = std::log2(total / choiceModel.countOf(uint32_t(c)));
+    }
+};
+
+// The encoder's pick: the candidate whose residual and choice cost least,
+// and that cost in bits.
 struct Pick {
     uint32_t candidate = 0;
     double bits = 1e300;
 };
-Pick bestPrediction(const CodingState& s, const Predictions& p, const AdaptiveFrequencies& choiceModel,
-                    const int* contexts, GridPoint actual) {
+Pick bestPrediction(const Pricing& price, const Predictions& p, GridPoint actual) {
     Pick best;
-    const double total = choiceModel.totalCount();
     for (uint32_t c = 0; c < uint32_t(p.count); ++c) {
         const GridPoint r = actual - p.candidate[c];
-        const double cost = residualBits(s.axis[0], contexts[0], r.x) + residualBits(s.axis[1], contexts[1], r.y) +
-                            residualBits(s.axis[2], contexts[2], r.z) + std::log2(total / choiceModel.countOf(c));
+        const double cost = price.axis[0](r.x) + price.axis[1](r.y) + price.axis[2](r.z) + price.choice[c];
         if (cost < best.bits) best = {c, cost};
     }
     return best;
@@ -121,7 +134,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     AdaptiveFrequencies& choiceModel = choiceModelOf(s);
     int contexts[3];
     magnitudeContexts(s, self, parent, contexts);
-    const uint32_t best = Io::kEncoding ? bestPrediction(s, p, choiceModel, contexts, actual).candidate : 0;
+    const uint32_t best = Io::kEncoding ? bestPrediction(Pricing(s, p, choiceModel, contexts), p, actual).candidate : 0;
     const uint32_t choice = io.symbol(choiceModel, best);
     if (choice >= uint32_t(p.count)) throw Error(ErrorKind::Corrupt, "corrupt file: a geometry predictor choice is out of range");
     s.previousChoice = choice;
@@ -215,12 +228,12 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
             const Predictions p = predict(s, self, top.decoded);
             int contexts[3];
             magnitudeContexts(s, self, top.decoded, contexts);
-            const AdaptiveFrequencies& choiceModel = choiceModelOf(s);
+            const Pricing price(s, p, choiceModelOf(s), contexts);
             uint32_t next = kNoVertex;
             double nextBits = 1e300;
             for (const uint32_t* w = first; w != last; ++w) {
                 if (done[*w]) continue;
-                const double bits = bestPrediction(s, p, choiceModel, contexts, gridPointOf(grid, *w)).bits;
+                const double bits = bestPrediction(price, p, gridPointOf(grid, *w)).bits;
                 if (bits < nextBits) {
                     nextBits = bits;
                     next = *w;

@@ -44,15 +44,28 @@ int32_t codeResidual(Io& io, AxisModels& m, int context, int32_t r) {
     return negative ? -int32_t(value) : int32_t(value);
 }
 
-// The encoder's estimate of codeResidual's cost, in bits.
-inline double residualBits(const AxisModels& m, int context, int32_t r) {
-    const uint32_t magnitude = magnitudeOf(r);
-    if (magnitude == 0) return m.zero[context].cost(1);
-    const int n = bitLength(magnitude);
-    double bits = m.zero[context].cost(0) + 1.0 + (n - 1);
-    for (int length = 1; length < kMaxLength && length <= n; ++length) bits += m.longer[context][length].cost(n > length);
-    return bits;
-}
+// The encoder's estimate of codeResidual's cost, in bits, for every bit
+// length at once: an encoder prices many residuals under the same models
+// (each candidate prediction of each possible next vertex), and the cost
+// depends on the length alone (the bits below the leading one count one
+// each).
+class ResidualCosts {
+public:
+    ResidualCosts() = default;
+    ResidualCosts(const AxisModels& m, int context) {
+        ofLength_[0] = m.zero[context].cost(1);
+        const double nonZero = m.zero[context].cost(0) + 1.0;  // and the sign
+        double longer = 0;  // "longer than k" for every k below the length
+        for (int n = 1; n <= kMaxLength; ++n) {
+            ofLength_[n] = nonZero + (n - 1) + longer + (n < kMaxLength ? m.longer[context][n].cost(0) : 0.0);
+            if (n < kMaxLength) longer += m.longer[context][n].cost(1);
+        }
+    }
+    double operator()(int32_t r) const { return ofLength_[bitLength(magnitudeOf(r))]; }
+
+private:
+    double ofLength_[kMaxLength + 1] = {};
+};
 
 }  // namespace drm
 
