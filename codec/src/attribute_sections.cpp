@@ -320,7 +320,7 @@ bool shouldWeld(const Mesh& mesh, const std::vector<int32_t>& quantized, const E
 Welding weld(const Mesh& mesh, const std::vector<int32_t>& q) {
     const size_t V = mesh.vertexCount();
     Welding w;
-    w.weldedOf.assign(V, kNoCorner);
+    w.weldedOf.assign(V, kNoVertex);
     std::vector<uint8_t> used(V, 0);
     for (uint32_t v : mesh.triangles)
         if (v < V) used[v] = 1;

@@ -110,7 +110,7 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
             const uint32_t apex = topology.apexAcross(edge.vi, edge.vj, &face);
             uint32_t rank = 0;
             const int context = model.forecast(edge).context;
-            if (apex == HalfEdgeMap::kAbsent) {
+            if (apex == kNoVertex) {
                 traversal.closeAsBoundary(edge);
             } else {
                 if (!model.admissible(apex, edge))
