@@ -17,7 +17,6 @@ namespace drm {
 namespace {
 
 constexpr uint8_t kMaterialNames = 16, kTextureNames = 17, kMetadata = 18;
-constexpr int kMinNormalBits = 4, kMaxNormalBits = 16, kMinUvBits = 1, kMaxUvBits = 24;
 
 // Floats as integers that keep their order (and every bit).
 uint32_t orderedBits(float x) {

@@ -60,7 +60,8 @@ FileHeader decodeHeader(ByteReader& in) {
     h.hasRepairs = (flags & kFlagRepairs) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
-        throw Error(ErrorKind::Corrupt, "corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");
+        throw Error(ErrorKind::Corrupt, "corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range " +
+                    std::to_string(kMinBits) + ".." + std::to_string(kMaxBits));
     const uint8_t predictor = in.u8("predictor");
     if (predictor != uint8_t(Predictor::Parallelogram) && predictor != uint8_t(Predictor::Midpoint))
         throw Error(ErrorKind::Corrupt, "corrupt file: unknown predictor " + std::to_string(predictor));
