@@ -79,8 +79,11 @@ Levers parseLevers(const std::string& list) {
         else if (name == leverName(1)) levers.gapClosing = true;
         else if (name == leverName(2)) levers.confidenceContext = true;
         else if (name == leverName(3)) levers.angleOrder = true;
-        else
-            throw Error(ErrorKind::InvalidInput, "unknown lever '" + name + "' (use all, none, or a list of filter, gap, context, angle)");
+        else {
+            std::string names;  // "filter, gap, context, angle"
+            for (int l = 0; l < kLeverCount; ++l) names += std::string(l == 0 ? "" : ", ") + leverName(l);
+            throw Error(ErrorKind::InvalidInput, "unknown lever '" + name + "' (use all, none, or a list of " + names + ")");
+        }
         start = comma + 1;
     }
     return levers;

@@ -194,7 +194,7 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
     // options.geometry is Refine exactly when lowBits > 0 (encodeConnectivity).
     const GeometryCoderEntry* coder = geometryCoderOf(options.geometry);
     GeometryEncoding encoding = coder->encode(vertexGrid, options.bits - lowBits, options.index);
-    if (const GeometryCoderEntry* fallback = coder->fallback()) {
+    if (const GeometryCoderEntry* fallback = coder->fallback) {
         // Scattered points (a soup of random triangles) predict no better
         // than raw bits: keep whichever section is smaller (the fallback's
         // on a tie).

@@ -48,16 +48,14 @@ std::vector<int32_t> decodeRefineLowBits(const VertexSet& vertices, const std::v
 }
 
 int noRefineBits(const uint8_t*, size_t, int) { return 0; }
-const GeometryCoderEntry* noFallback() { return nullptr; }
-const GeometryCoderEntry* rawFallback() { return geometryCoderOf(GeometryCoder::Raw); }
 
 // Indexed by id - 1 (the ids are 1, 2, 3).
 const GeometryCoderEntry kCoders[] = {
-    {GeometryCoder::Raw, "raw", encodeRaw, noFallback, decodeRaw, noRefineBits, nullptr, nullptr},
-    {GeometryCoder::SpanningTree, "tree", encodeGeometryTree, rawFallback, decodeTree, noRefineBits, nullptr, nullptr},
+    {GeometryCoder::Raw, "raw", encodeRaw, nullptr, decodeRaw, noRefineBits, nullptr, nullptr},
+    {GeometryCoder::SpanningTree, "tree", encodeGeometryTree, &kCoders[0], decodeTree, noRefineBits, nullptr, nullptr},
     // Refine's own fallback, the spanning tree alone, is one of the low-bit
     // counts the encoder tries (encodeConnectivity), not a section swap.
-    {GeometryCoder::Refine, "refine", encodeGeometryTree, noFallback, decodeRefineCoarse, refineBitsOfRefine,
+    {GeometryCoder::Refine, "refine", encodeGeometryTree, nullptr, decodeRefineCoarse, refineBitsOfRefine,
      encodeRefineLowBits, decodeRefineLowBits},
 };
 constexpr size_t kCoderCount = sizeof kCoders / sizeof kCoders[0];

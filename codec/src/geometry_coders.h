@@ -37,7 +37,7 @@ struct GeometryCoderEntry {
     GeometryEncoding (*encode)(const std::vector<int32_t>& grid, int bits, NeighbourIndex index);
     // The coder whose section the encoder keeps instead when it is no larger
     // (scattered points predict no better than raw bits), or nullptr.
-    const GeometryCoderEntry* (*fallback)();
+    const GeometryCoderEntry* fallback;
 
     // Decoder, first pass; throws Error (Corrupt) on a malformed section.
     VertexSet (*decode)(const uint8_t* data, size_t size, uint64_t vertexCount, int bits);

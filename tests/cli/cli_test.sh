@@ -44,7 +44,7 @@ expect_png() {
 }
 
 # palette_colour NAME: the hex colour `drm ranks` lists for a bucket of the
-# rank palette ("rank 1", ...), so the tests follow rank_palette.h.
+# rank palette ("rank 1", ...), so the tests follow drm.h's palette.
 palette_colour() {
     "$drm" ranks "$data/torus.ply" palette.ply >palette.txt 2>&1 || fail "ranks for the palette: $(cat palette.txt)"
     sed -n "s/^  $1  *#\([0-9a-f]\{6\}\) .*/\1/p" palette.txt
