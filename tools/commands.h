@@ -12,7 +12,7 @@ namespace cli {
 struct Command {
     const char* name;
     const char* summary;  // one line for `drm --help`
-    const char* help;     // the full text of `drm help NAME`
+    const char* help;     // the full text of `drm help NAME`, with help_text.h's {names}
     // Returns the exit code; throws drm::Error, UsageError or std::exception.
     int (*run)(const std::vector<std::string>& args);
 };

@@ -4,6 +4,7 @@
 // one line on stderr, starting "drm: error: ".
 #include "cli.h"
 #include "commands.h"
+#include "help_text.h"
 
 #include <drm/drm.h>
 
@@ -71,7 +72,7 @@ int dispatch(const std::vector<std::string>& args) {
         const Command* command = findCommand(args[1]);
         if (!command || args.size() > 2)
             throw drm::cli::UsageError("no help for '" + args[1] + "' (commands: encode, decode, info, verify, ranks, render, bench)");
-        std::fputs(command->help, stdout);
+        std::fputs(drm::cli::expandHelp(command->help).c_str(), stdout);
         return 0;
     }
     const Command* command = findCommand(first);
@@ -80,7 +81,7 @@ int dispatch(const std::vector<std::string>& args) {
     for (const std::string& arg : rest) {
         if (arg == "--") break;
         if (arg == "--help" || arg == "-h") {
-            std::fputs(command->help, stdout);
+            std::fputs(drm::cli::expandHelp(command->help).c_str(), stdout);
             return 0;
         }
     }

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "drm/drm.h"
+#include "geometry_coders.h"
 
 namespace drm {
 
@@ -52,18 +53,18 @@ Predictor parsePredictor(const std::string& name) {
 }
 
 const char* geometryCoderName(GeometryCoder g) {
-    switch (g) {
-        case GeometryCoder::Raw: return "raw";
-        case GeometryCoder::SpanningTree: return "tree";
-        case GeometryCoder::Refine: return "refine";
-    }
-    return "unknown";
+    const GeometryCoderEntry* entry = geometryCoderOf(g);
+    return entry ? entry->name : "unknown";
 }
 
 GeometryCoder parseGeometryCoder(const std::string& name) {
-    for (GeometryCoder g : {GeometryCoder::SpanningTree, GeometryCoder::Raw, GeometryCoder::Refine})
-        if (name == geometryCoderName(g)) return g;
-    throw Error(ErrorKind::InvalidInput, "unknown geometry coder '" + name + "' (use tree, refine or raw)");
+    if (const GeometryCoderEntry* entry = geometryCoderByName(name)) return entry->id;
+    // "tree, refine or raw": the table's names, in its listing order.
+    const std::vector<const GeometryCoderEntry*>& coders = geometryCoders();
+    std::string names;
+    for (size_t i = 0; i < coders.size(); ++i)
+        names += std::string(i == 0 ? "" : (i + 1 == coders.size() ? " or " : ", ")) + coders[i]->name;
+    throw Error(ErrorKind::InvalidInput, "unknown geometry coder '" + name + "' (use " + names + ")");
 }
 
 Levers parseLevers(const std::string& list) {
@@ -78,8 +79,11 @@ Levers parseLevers(const std::string& list) {
         else if (name == leverName(1)) levers.gapClosing = true;
         else if (name == leverName(2)) levers.confidenceContext = true;
         else if (name == leverName(3)) levers.angleOrder = true;
-        else
-            throw Error(ErrorKind::InvalidInput, "unknown lever '" + name + "' (use all, none, or a list of filter, gap, context, angle)");
+        else {
+            std::string names;  // "filter, gap, context, angle"
+            for (int l = 0; l < kLeverCount; ++l) names += std::string(l == 0 ? "" : ", ") + leverName(l);
+            throw Error(ErrorKind::InvalidInput, "unknown lever '" + name + "' (use all, none, or a list of " + names + ")");
+        }
         start = comma + 1;
     }
     return levers;

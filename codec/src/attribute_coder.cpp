@@ -458,13 +458,13 @@ std::vector<uint32_t> wedgesOf(const AttributeMesh& mesh, const std::vector<uint
                                uint32_t* wedgeCount) {
     const size_t corners = mesh.triangles.size();
     std::vector<uint32_t> wedgeOf(corners);
-    const uint32_t none = 0xFFFFFFFFu;
+    const uint32_t kNoWedge = kNoIndex;
     uint32_t next = 0;
     if (perVertex) {
-        std::vector<uint32_t> ofVertex(mesh.vertexCount, none);
+        std::vector<uint32_t> ofVertex(mesh.vertexCount, kNoWedge);
         for (size_t c = 0; c < corners; ++c) {
             uint32_t& w = ofVertex[mesh.triangles[c]];
-            if (w == none) w = next++;
+            if (w == kNoWedge) w = next++;
             wedgeOf[c] = w;
         }
     } else {
@@ -476,10 +476,10 @@ std::vector<uint32_t> wedgesOf(const AttributeMesh& mesh, const std::vector<uint
             sets.joinToLower(a0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[a0]));
             sets.joinToLower(b0, cornerAt(mesh.triangles, c1 / 3, mesh.triangles[b0]));
         }
-        std::vector<uint32_t> ofRoot(corners, none);
+        std::vector<uint32_t> ofRoot(corners, kNoWedge);
         for (size_t c = 0; c < corners; ++c) {
             uint32_t& w = ofRoot[sets.root(uint32_t(c))];
-            if (w == none) w = next++;
+            if (w == kNoWedge) w = next++;
             wedgeOf[c] = w;
         }
     }

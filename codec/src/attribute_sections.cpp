@@ -17,7 +17,6 @@ namespace drm {
 namespace {
 
 constexpr uint8_t kMaterialNames = 16, kTextureNames = 17, kMetadata = 18;
-constexpr int kMinNormalBits = 4, kMaxNormalBits = 16, kMinUvBits = 1, kMaxUvBits = 24;
 
 // Floats as integers that keep their order (and every bit).
 uint32_t orderedBits(float x) {
@@ -320,7 +319,7 @@ bool shouldWeld(const Mesh& mesh, const std::vector<int32_t>& quantized, const E
 Welding weld(const Mesh& mesh, const std::vector<int32_t>& q) {
     const size_t V = mesh.vertexCount();
     Welding w;
-    w.weldedOf.assign(V, kNoCorner);
+    w.weldedOf.assign(V, kNoVertex);
     std::vector<uint8_t> used(V, 0);
     for (uint32_t v : mesh.triangles)
         if (v < V) used[v] = 1;

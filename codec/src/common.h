@@ -1,5 +1,5 @@
-// Small helpers every part of the codec uses, written once: the "no vertex"
-// index, bit lengths, integer grid points and their squared distances, and
+// Small helpers every part of the codec uses, written once: the "none"
+// index (and its name for vertices), bit lengths, integer grid points and their squared distances, and
 // a union-find.
 #ifndef DRM_COMMON_H
 #define DRM_COMMON_H
@@ -11,9 +11,20 @@
 
 namespace drm {
 
-// The index that stands for "no vertex" (no parent, no candidate, an empty
-// slot) wherever a vertex index is stored.
-constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
+// The value that stands for "none" in any table of uint32 indices: never a
+// valid index, since a file holds at most 2^32 - 2 vertices and 3 * faces
+// corners fit below it. Each kind of index names it once, from this one:
+// kNoVertex and kNotPresent here, kNoCorner (corner_table.h),
+// HalfEdgeMap::kAbsent (no entry), VertexIndex::kNoColumn.
+constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+
+// "No vertex" (no parent, no candidate, no preferred apex, an empty slot)
+// wherever a vertex index is stored.
+constexpr uint32_t kNoVertex = kNoIndex;
+
+// A removed vertex's slot in a spatial index's list of present vertices
+// (VertexIndex, FlannIndex: presentSlot_).
+constexpr uint32_t kNotPresent = kNoIndex;
 
 // The number of bits needed to write m: 0 for 0, 1 for 1, 3 for 5.
 inline int bitLength(uint64_t m) {

@@ -14,9 +14,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "common.h"
+
 namespace drm {
 
-constexpr uint32_t kNoCorner = 0xFFFFFFFFu;
+constexpr uint32_t kNoCorner = kNoIndex;  // no corner (a boundary edge's opposite)
 
 inline uint32_t nextCorner(uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
 inline uint32_t previousCorner(uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }

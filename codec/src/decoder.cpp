@@ -1,78 +1,99 @@
 // Decoder (paper, Table 2): read the vertex set, then replay the traversal,
 // turning each rank back into the vertex that closes the triangle.
+//
+// decodeCore runs the stages below in order; each reads what the earlier
+// ones left in a Decoding and adds its part:
+//   readFile (file_format.h)     header and section table, checked
+//   decodeVertices               the geometry section's first pass
+//   readRepairsBeforeTraversal   the vertex copies of a manifold cut
+//   decodeConnectivity           the ranks, replayed into triangles
+//   refineVertices               the geometry's second pass (Refine)
+//   undoRepairs                  the cut undone
+//   restoreVertexOrder           back to the input numbering
+//   decodeAttributeSections      (attribute_sections.h)
+//   dequantizeVertices, fillStats
 #include <algorithm>
 #include <memory>
 #include <string>
 
 #include "attribute_sections.h"
 #include "decoder.h"
-#include "file_format.h"
-#include "geometry_raw.h"
-#include "geometry_refine.h"
-#include "geometry_tree.h"
 #include "edge_model.h"
+#include "file_format.h"
+#include "geometry_coders.h"
 #include "progress.h"
 #include "quantize.h"
 #include "rank_coder.h"
 #include "repair_section.h"
+#include "spatial_index.h"
+#include "stats.h"
 #include "traversal.h"
 #include "vertex_order.h"
-#include "spatial_index.h"
 
 namespace drm {
 
-Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& options, FileParts* partsOut) {
-    ProgressReporter progress(options.progress);
-    progress.stage("reading", 0.0);
-    FileParts& parts = *partsOut;
-    parts = readFile(data, size);
-    const FileHeader& header = parts.header;
+namespace {
 
+// What the stages hand on to one another.
+struct Decoding {
+    Decoding(const FileParts& p, const GeometryCoderEntry& coder) : parts(p), header(p.header), geometryCoder(coder) {}
+
+    const FileParts& parts;
+    const FileHeader& header;
+    const GeometryCoderEntry& geometryCoder;
     Decoded result;
-    result.grid = header.grid;
-    progress.stage("decoding vertices", 0.01);
-    // Refine: the coarse grid now (the connectivity is ranked on it), the
-    // low bits after the connectivity.
-    RefinePayload refine;
-    if (header.geometryCoder == GeometryCoder::Refine) {
-        refine = readRefinePayload(parts.geometry, parts.geometrySize, header.grid.bits);
-        result.quantized = decodeGeometryTree(refine.tree, refine.treeSize, header.vertexCount,
-                                              header.grid.bits - refine.lowBits);
-    } else {
-        result.quantized = header.geometryCoder == GeometryCoder::Raw
-                               ? unpackGrid(parts.geometry, parts.geometrySize, header.vertexCount, header.grid.bits)
-                               : decodeGeometryTree(parts.geometry, parts.geometrySize, header.vertexCount,
-                                                    header.grid.bits);
-    }
-
-    const size_t vertexCount = size_t(header.vertexCount);
+    VertexSet vertices;  // the first pass (its grid moves into result.quantized)
+    size_t vertexCount = 0;  // the file's vertices, copies not included
     // A mesh that was cut into manifold pieces: the traversal also sees the
     // vertex copies, and the faces repeating a vertex are not in it.
     std::unique_ptr<RepairReader> repairs;
-    std::vector<uint32_t> noCopies;
-    if (header.hasRepairs) {
-        repairs.reset(new RepairReader(parts.repairs, parts.repairsSize, header.vertexCount, header.copyCount,
-                                       header.faceCount));
-        for (uint32_t original : repairs->repairs().copyOf)
-            for (int k = 0; k < 3; ++k) result.quantized.push_back(result.quantized[3 * size_t(original) + k]);
+    size_t looseCount = 0, duplicateCount = 0;
+    size_t traversalFaces = 0, traversalVertices = 0;
+
+    const std::vector<uint32_t>& copyOf() const {
+        static const std::vector<uint32_t> none;
+        return repairs ? repairs->repairs().copyOf : none;
     }
-    const std::vector<uint32_t>& copyOf = repairs ? repairs->repairs().copyOf : noCopies;
-    const size_t looseCount = repairs ? repairs->repairs().looseCount() : 0;
-    const size_t duplicateCount = repairs ? repairs->duplicateCount() : 0;
-    const size_t faceCount = size_t(header.faceCount) - looseCount - duplicateCount;  // the traversal's faces
-    const size_t traversalVertices = vertexCount + copyOf.size();
+};
+
+void decodeVertices(Decoding& d) {
+    d.vertices = d.geometryCoder.decode(d.parts.geometry, d.parts.geometrySize, d.header.vertexCount, d.header.grid.bits);
+    d.result.quantized = std::move(d.vertices.grid);
+    d.vertexCount = size_t(d.header.vertexCount);
+}
+
+// Parts 1 to 3 of the repairs section: the copies join the vertex set (at
+// their originals' positions), and the loose and repeated faces are counted
+// out of the traversal's.
+void readRepairsBeforeTraversal(Decoding& d) {
+    const FileHeader& header = d.header;
+    if (header.hasRepairs) {
+        d.repairs.reset(new RepairReader(d.parts.repairs, d.parts.repairsSize, header.vertexCount, header.copyCount,
+                                         header.faceCount));
+        for (uint32_t original : d.repairs->repairs().copyOf)
+            for (int k = 0; k < 3; ++k) d.result.quantized.push_back(d.result.quantized[3 * size_t(original) + k]);
+        d.looseCount = d.repairs->repairs().looseCount();
+        d.duplicateCount = d.repairs->duplicateCount();
+    }
+    d.traversalFaces = size_t(header.faceCount) - d.looseCount - d.duplicateCount;
+    d.traversalVertices = d.vertexCount + d.copyOf().size();
+}
+
+void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressReporter& progress) {
+    const FileHeader& header = d.header;
+    Decoded& result = d.result;
+    const size_t faceCount = d.traversalFaces;
     // The face count is only a claim until the ranks deliver the faces: the
     // tables start small and grow as faces are decoded.
     const size_t expectedFaces = std::min<size_t>(faceCount, size_t(1) << 16);
     const std::unique_ptr<SpatialIndex> candidates =
         makeSpatialIndex(result.quantized, options.index, IndexRole::Traversal);
-    Traversal traversal(traversalVertices, expectedFaces, candidates.get());
-    EdgeModel model(result.quantized, header.grid.bits - refine.lowBits, header.predictor, header.curvature, header.levers,
-                    faceCount, *candidates, traversal);
-    RankDecoder coder(parts.connectivity, parts.connectivitySize, model.contextCount());
-    Stats& stats = result.stats;
+    Traversal traversal(d.traversalVertices, expectedFaces, candidates.get());
+    EdgeModel model(result.quantized, header.grid.bits - d.vertices.lowBits, header.predictor, header.curvature,
+                    header.levers, faceCount, *candidates, traversal);
+    RankDecoder coder(d.parts.connectivity, d.parts.connectivitySize, model.contextCount());
+    std::vector<uint64_t>& histogram = result.stats.rankHistogram;
 
-    progress.stage("decoding connectivity", 0.05);
     const size_t components = header.startTriangles.size() / 3;
     for (size_t c = 0; c < components; ++c) {
         const uint32_t* start = &header.startTriangles[3 * c];
@@ -89,11 +110,11 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
             const uint32_t rank = coder.get(model.forecast(edge).context);
             if (coder.bytesPastEnd() > 0)
                 throw Error(ErrorKind::Corrupt, "corrupt file: the connectivity section ends before the last face");
-            if (rank >= stats.rankHistogram.size()) {
-                if (rank > traversalVertices) throw Error(ErrorKind::Corrupt, "corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
-                stats.rankHistogram.resize(size_t(rank) + 1, 0);
+            if (rank >= histogram.size()) {
+                if (rank > d.traversalVertices) throw Error(ErrorKind::Corrupt, "corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
+                histogram.resize(size_t(rank) + 1, 0);
             }
-            ++stats.rankHistogram[rank];
+            ++histogram[rank];
             if (rank == 0) {
                 traversal.closeAsBoundary(edge);
                 continue;
@@ -115,55 +136,87 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
     if (traversal.triangleCount() != faceCount)
         throw Error(ErrorKind::Corrupt, "corrupt file: decoded " + std::to_string(traversal.triangleCount()) + " faces, the header says " +
                     std::to_string(faceCount));
-
     result.mesh.triangles = traversal.takeTriangles();
-    if (refine.lowBits > 0) {
-        progress.stage("refining vertices", 0.95);
-        std::vector<uint32_t> triangles = result.mesh.triangles;
-        for (uint32_t& v : triangles)
-            if (v >= vertexCount) v = copyOf[v - vertexCount];
-        const std::vector<int32_t> coarse(result.quantized.begin(), result.quantized.begin() + 3 * vertexCount);
-        const std::vector<int32_t> fine = decodeRefinement(refine, coarse, triangles);
-        std::copy(fine.begin(), fine.end(), result.quantized.begin());
-    }
-    if (repairs) {
-        // Undo the cut: copies back to their originals, turned faces back
-        // over, then the repeated faces and the faces that repeat a vertex.
-        repairs->readAfterTraversal(faceCount);
-        const Repairs& r = repairs->repairs();
-        std::vector<uint32_t>& t = result.mesh.triangles;
-        undoCut(t, r, vertexCount);
-        stats.flippedFaces = uint64_t(std::count(r.flipped.begin(), r.flipped.end(), 1));
-        stats.repeatedFaces = duplicateCount;
-        result.faceRank.resize(t.size() / 3, 0);
-        result.quantized.resize(3 * vertexCount);
-    }
-    if (header.keepsVertexOrder) {
-        // Back to the input numbering: decoded vertex d was input vertex order[d].
-        const std::vector<uint32_t> order = decodeVertexOrder(parts.vertexOrder, parts.vertexOrderSize, vertexCount);
-        std::vector<int32_t> inInputOrder(result.quantized.size());
-        for (size_t d = 0; d < vertexCount; ++d)
-            for (int k = 0; k < 3; ++k) inInputOrder[3 * size_t(order[d]) + k] = result.quantized[3 * d + k];
-        result.quantized.swap(inInputOrder);
-        for (uint32_t& v : result.mesh.triangles) v = order[v];
-    }
-    if (!parts.attributes.empty()) {
-        progress.stage("decoding attributes", 0.97);
-        decodeAttributeSections(parts, result);
-    }
+}
+
+// The geometry coder's second pass, across the decoded triangles (vertex
+// copies stand for their originals).
+void refineVertices(Decoding& d) {
+    std::vector<uint32_t> triangles = d.result.mesh.triangles;
+    const std::vector<uint32_t>& copyOf = d.copyOf();
+    for (uint32_t& v : triangles)
+        if (v >= d.vertexCount) v = copyOf[v - d.vertexCount];
+    std::vector<int32_t>& quantized = d.result.quantized;
+    const std::vector<int32_t> coarse(quantized.begin(), quantized.begin() + 3 * d.vertexCount);
+    const std::vector<int32_t> fine = d.geometryCoder.decodeAfterConnectivity(d.vertices, coarse, triangles);
+    std::copy(fine.begin(), fine.end(), quantized.begin());
+}
+
+// Undo the cut: copies back to their originals, turned faces back over,
+// then the repeated faces and the faces that repeat a vertex.
+void undoRepairs(Decoding& d) {
+    d.repairs->readAfterTraversal(d.traversalFaces);
+    std::vector<uint32_t>& t = d.result.mesh.triangles;
+    undoCut(t, d.repairs->repairs(), d.vertexCount);
+    d.result.faceRank.resize(t.size() / 3, 0);
+    d.result.quantized.resize(3 * d.vertexCount);
+}
+
+// Back to the input numbering: decoded vertex v was input vertex order[v].
+void restoreVertexOrder(Decoding& d) {
+    const std::vector<uint32_t> order = decodeVertexOrder(d.parts.vertexOrder, d.parts.vertexOrderSize, d.vertexCount);
+    Decoded& result = d.result;
+    std::vector<int32_t> inInputOrder(result.quantized.size());
+    for (size_t v = 0; v < d.vertexCount; ++v)
+        for (int k = 0; k < 3; ++k) inInputOrder[3 * size_t(order[v]) + k] = result.quantized[3 * v + k];
+    result.quantized.swap(inInputOrder);
+    for (uint32_t& v : result.mesh.triangles) v = order[v];
+}
+
+void dequantizeVertices(Decoding& d) {
     size_t badVertex = 0;
-    if (!dequantize(result.quantized, header.grid, result.mesh.positions, &badVertex))
+    if (!dequantize(d.result.quantized, d.header.grid, d.result.mesh.positions, &badVertex))
         throw Error(ErrorKind::Corrupt, "corrupt file: vertex " + std::to_string(badVertex) +
                     " lies outside the range of single-precision floats");
+}
 
-    fillStatsFromHeader(stats, parts, size);  // leaves the decoded figures (ranks, repairs, attributes) alone
-    stats.vertices = result.mesh.vertexCount();  // the file's vertices, or the split ones of a welded mesh
-    stats.components = components;
-    stats.boundaryEdges = stats.rankHistogram.empty() ? 0 : stats.rankHistogram[0];
-    stats.refineBits = refine.lowBits;
-    stats.looseFaces = looseCount;
+void fillStats(Decoding& d, size_t fileSize) {
+    Stats& stats = d.result.stats;
+    static const Repairs noRepairs;
+    fillStatsFromHeader(stats, d.parts, fileSize);  // leaves the decoded figures (ranks, repairs, attributes) alone
+    fillStatsFromTraversal(stats, d.vertices.lowBits, d.repairs ? d.repairs->repairs() : noRepairs);
+    stats.vertices = d.result.mesh.vertexCount();  // the file's vertices, or the split ones of a welded mesh
+}
+
+}  // namespace
+
+Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& options, FileParts* partsOut) {
+    ProgressReporter progress(options.progress);
+    progress.stage("reading", 0.0);
+    FileParts& parts = *partsOut;
+    parts = readFile(data, size);
+    Decoding d(parts, *geometryCoderOf(parts.header.geometryCoder));  // readFile refuses ids the table lacks
+    d.result.grid = parts.header.grid;
+
+    progress.stage("decoding vertices", 0.01);
+    decodeVertices(d);
+    readRepairsBeforeTraversal(d);
+    progress.stage("decoding connectivity", 0.05);
+    decodeConnectivity(d, options, progress);
+    if (d.geometryCoder.decodeAfterConnectivity) {
+        progress.stage("refining vertices", 0.95);
+        refineVertices(d);
+    }
+    if (d.repairs) undoRepairs(d);
+    if (parts.header.keepsVertexOrder) restoreVertexOrder(d);
+    if (!parts.attributes.empty()) {
+        progress.stage("decoding attributes", 0.97);
+        decodeAttributeSections(parts, d.result);
+    }
+    dequantizeVertices(d);
+    fillStats(d, size);
     progress.stage("done", 1.0);
-    return result;
+    return std::move(d.result);
 }
 
 }  // namespace drm

@@ -74,11 +74,11 @@ int EdgeModel::contextCount() const { return levers_.confidenceContext ? 2 * kDi
 const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     EdgeForecast& f = forecast_;
     f.prediction = snapPrediction(predictor_.predict(edge), bits_);
-    f.preferred = levers_.gapClosing ? gapClosingVertex(edge, grid_, admissible_) : kNoPreference;
+    f.preferred = levers_.gapClosing ? gapClosingVertex(edge, grid_, admissible_) : kNoVertex;
     f.context = 0;
     f.nearest.clear();
     disagreement_ = Disagreement();  // only an edge where the orders disagree teaches resolved()
-    if (f.preferred != kNoPreference) {
+    if (f.preferred != kNoVertex) {
         if (levers_.confidenceContext) {
             const std::vector<RankedVertex>& first = ranks_.nearest(f.prediction, 1, edge);
             f.context = kGapContext + (!first.empty() && first[0].second == f.preferred ? 0 : 1);
@@ -125,7 +125,7 @@ void EdgeModel::orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& ne
 }
 
 void EdgeModel::resolved(uint32_t apex) {
-    if (disagreement_.byDistance == kNoPreference) return;
+    if (disagreement_.byDistance == kNoVertex) return;
     if (apex == disagreement_.byAngle) ++angleWins_;
     else if (apex == disagreement_.byDistance) ++distanceWins_;
     // Halving keeps the choice local: it follows the mesh's regions.

@@ -18,7 +18,7 @@ class SpatialIndex;
 
 struct EdgeForecast {
     FixedPoint prediction;
-    uint32_t preferred = kNoPreference;  // gap-closing vertex, rank 1 when present
+    uint32_t preferred = kNoVertex;  // gap-closing vertex, rank 1 when present
     int context = 0;                     // coder context, < EdgeModel::contextCount()
     std::vector<RankedVertex> nearest;   // the nearest candidates, in rank order (confidence / angle levers)
 };
@@ -58,7 +58,7 @@ private:
     std::vector<RankedVertex> byAngle_;  // scratch: the nearest in angle order
     // Rank-1 disagreements between distance and angle order: who was right.
     struct Disagreement {
-        uint32_t byDistance = kNoPreference, byAngle = kNoPreference;
+        uint32_t byDistance = kNoVertex, byAngle = kNoVertex;
     } disagreement_;
     uint32_t angleWins_ = 0, distanceWins_ = 0;
 };

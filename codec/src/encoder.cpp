@@ -6,9 +6,7 @@
 
 #include "encoder.h"
 #include "file_format.h"
-#include "geometry_raw.h"
-#include "geometry_refine.h"
-#include "geometry_tree.h"
+#include "geometry_coders.h"
 #include "manifold_cut.h"
 #include "mesh_check.h"
 #include "edge_model.h"
@@ -20,6 +18,7 @@
 #include "traversal.h"
 #include "vertex_order.h"
 #include "spatial_index.h"
+#include "stats.h"
 
 namespace drm {
 
@@ -111,7 +110,7 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
             const uint32_t apex = topology.apexAcross(edge.vi, edge.vj, &face);
             uint32_t rank = 0;
             const int context = model.forecast(edge).context;
-            if (apex == HalfEdgeMap::kAbsent) {
+            if (apex == kNoVertex) {
                 traversal.closeAsBoundary(edge);
             } else {
                 if (!model.admissible(apex, edge))
@@ -134,7 +133,6 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
 
     progress.stage("writing", 0.95);
     const std::vector<uint8_t> connectivity = coder.finish();
-    size_t headerBytes = 0;
     const std::vector<uint8_t> vertexOrder =
         options.keepVertexOrder ? encodeVertexOrder(prepared.order) : std::vector<uint8_t>();
     std::vector<uint8_t> repairs;
@@ -148,19 +146,20 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
         for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
         repairs = encodeRepairs(inDecodedOrder, header.vertexCount);
     }
-    std::vector<uint8_t> refined;
-    if (prepared.lowBits > 0) {
-        // The low bits, predicted across the triangles as the decoder
+    std::vector<uint8_t> secondPass;
+    const GeometryCoderEntry& geometryCoder = *geometryCoderOf(prepared.geometryCoder);
+    if (geometryCoder.encodeAfterConnectivity) {
+        // Refine's low bits, predicted across the triangles as the decoder
         // rebuilds them (vertex copies stand for their originals).
         std::vector<uint32_t> triangles = traversal.triangles();
         for (uint32_t& v : triangles)
             if (v >= header.vertexCount) v = prepared.repairs.copyOf[v - header.vertexCount];
-        refined = writeRefinePayload(prepared.lowBits,
-                                     encodeRefinement(prepared.fineDecoded, prepared.lowBits, triangles),
-                                     prepared.geometry);
+        secondPass = geometryCoder.encodeAfterConnectivity(prepared.geometry, prepared.fineDecoded, prepared.lowBits,
+                                                           triangles);
     }
-    const std::vector<uint8_t>& geometry = prepared.lowBits > 0 ? refined : prepared.geometry;
-    result.bytes = writeFile(header, connectivity, geometry, vertexOrder, repairs, {}, &headerBytes);
+    const std::vector<uint8_t>& geometry = geometryCoder.encodeAfterConnectivity ? secondPass : prepared.geometry;
+    FileParts written;
+    result.bytes = writeFile(header, connectivity, geometry, vertexOrder, repairs, {}, &written);
     // The faces as the decoder will give them back.
     attempt.decodedTriangles = traversal.triangles();
     if (prepared.repaired) {
@@ -179,26 +178,8 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     attempt.vertexOrder = vertexOrder;
     attempt.repairs = repairs;
 
-    stats.vertices = header.vertexCount;
-    stats.faces = header.faceCount;
-    stats.components = header.startTriangles.size() / 3;
-    stats.boundaryEdges = stats.rankHistogram.empty() ? 0 : stats.rankHistogram[0];
-    stats.bits = options.bits;
-    stats.predictor = predictor;
-    stats.curvature = options.curvature;
-    stats.levers = options.levers;
-    stats.headerBytes = headerBytes;
-    stats.connectivityBytes = connectivity.size();
-    stats.geometryBytes = geometry.size();
-    stats.geometry = prepared.geometryCoder;
-    stats.refineBits = prepared.lowBits;
-    stats.vertexOrderBytes = vertexOrder.size();
-    stats.repairBytes = repairs.size();
-    stats.splitVertices = prepared.repairs.copyOf.size();
-    stats.flippedFaces = size_t(std::count(prepared.repairs.flipped.begin(), prepared.repairs.flipped.end(), 1));
-    stats.looseFaces = looseCount;
-    stats.repeatedFaces = duplicateCount;
-    stats.totalBytes = result.bytes.size();
+    fillStatsFromHeader(stats, written, result.bytes.size());
+    fillStatsFromTraversal(stats, prepared.lowBits, prepared.repairs);
     return attempt;
 }
 
@@ -210,22 +191,22 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
     prepared.lowBits = lowBits;
     const std::vector<int32_t> coarse = lowBits > 0 ? coarsenGrid(prepared.quantized, lowBits) : std::vector<int32_t>();
     const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : prepared.quantized;
-    prepared.geometryCoder = GeometryCoder::Raw;
-    if (lowBits == 0) prepared.geometry = packGrid(prepared.quantized, options.bits);
-    if (options.geometry == GeometryCoder::SpanningTree || options.geometry == GeometryCoder::Refine) {
+    // options.geometry is Refine exactly when lowBits > 0 (encodeConnectivity).
+    const GeometryCoderEntry* coder = geometryCoderOf(options.geometry);
+    GeometryEncoding encoding = coder->encode(vertexGrid, options.bits - lowBits, options.index);
+    if (const GeometryCoderEntry* fallback = coder->fallback) {
         // Scattered points (a soup of random triangles) predict no better
-        // than raw bits: keep whichever section is smaller.
-        GeometryEncoding tree = encodeGeometryTree(vertexGrid, options.bits - lowBits, options.index);
-        if (lowBits > 0 || tree.bytes.size() < prepared.geometry.size()) {
-            prepared.geometryCoder = lowBits > 0 ? GeometryCoder::Refine : GeometryCoder::SpanningTree;
-            prepared.geometry = std::move(tree.bytes);
-            prepared.order = std::move(tree.order);
+        // than raw bits: keep whichever section is smaller (the fallback's
+        // on a tie).
+        GeometryEncoding alternative = fallback->encode(vertexGrid, options.bits - lowBits, options.index);
+        if (alternative.bytes.size() <= encoding.bytes.size()) {
+            coder = fallback;
+            encoding = std::move(alternative);
         }
     }
-    if (prepared.geometryCoder == GeometryCoder::Raw) {
-        prepared.order.resize(mesh.vertexCount());
-        for (size_t v = 0; v < prepared.order.size(); ++v) prepared.order[v] = uint32_t(v);
-    }
+    prepared.geometryCoder = coder->id;
+    prepared.geometry = std::move(encoding.bytes);
+    prepared.order = std::move(encoding.order);
     if (lowBits > 0) {
         prepared.fineDecoded.resize(3 * prepared.order.size());
         for (size_t d = 0; d < prepared.order.size(); ++d)
@@ -326,8 +307,7 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     prepared.repairs.duplicateOf = std::move(cut.duplicateOf);
     prepared.repairs.duplicateReversed = std::move(cut.duplicateReversed);
 
-    if (options.geometry != GeometryCoder::SpanningTree && options.geometry != GeometryCoder::Raw &&
-        options.geometry != GeometryCoder::Refine)
+    if (!geometryCoderOf(options.geometry))
         throw Error(ErrorKind::InvalidInput, "unknown geometry coder " + std::to_string(int(options.geometry)));
     if (options.predictor != Predictor::Auto && options.predictor != Predictor::Parallelogram &&
         options.predictor != Predictor::Midpoint)

@@ -49,6 +49,17 @@ struct FixedPoint {
     int64_t x = 0, y = 0, z = 0;
 };
 
+// Squared distance from p to the grid point whose three coordinates start
+// at point, in fixed-point units: the one distance every search is decided
+// by, whether the point is read from a grid (spatial_index.h) or from the
+// copy a cell keeps (vertex_index.h).
+inline int64_t fixedDistance2(const int32_t* point, const FixedPoint& p) {
+    const int64_t dx = int64_t(point[0]) * kSubUnits - p.x;
+    const int64_t dy = int64_t(point[1]) * kSubUnits - p.y;
+    const int64_t dz = int64_t(point[2]) * kSubUnits - p.z;
+    return dx * dx + dy * dy + dz * dz;
+}
+
 }  // namespace drm
 
 #endif  // DRM_EXACT_MATH_H

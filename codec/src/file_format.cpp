@@ -7,6 +7,7 @@
 
 #include "container.h"
 #include "crc32.h"
+#include "geometry_coders.h"
 #include "quantize.h"
 
 namespace drm {
@@ -59,7 +60,8 @@ FileHeader decodeHeader(ByteReader& in) {
     h.hasRepairs = (flags & kFlagRepairs) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
-        throw Error(ErrorKind::Corrupt, "corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range 1..21");
+        throw Error(ErrorKind::Corrupt, "corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range " +
+                    std::to_string(kMinBits) + ".." + std::to_string(kMaxBits));
     const uint8_t predictor = in.u8("predictor");
     if (predictor != uint8_t(Predictor::Parallelogram) && predictor != uint8_t(Predictor::Midpoint))
         throw Error(ErrorKind::Corrupt, "corrupt file: unknown predictor " + std::to_string(predictor));
@@ -68,8 +70,7 @@ FileHeader decodeHeader(ByteReader& in) {
     if (connectivity != uint8_t(ConnectivityCoder::RankRangeCoder))
         throw Error(ErrorKind::Unsupported, "unsupported file: unknown connectivity coder " + std::to_string(connectivity));
     const uint8_t geometry = in.u8("geometry coder");
-    if (geometry != uint8_t(GeometryCoder::Raw) && geometry != uint8_t(GeometryCoder::SpanningTree) &&
-        geometry != uint8_t(GeometryCoder::Refine))
+    if (!geometryCoderById(geometry))
         throw Error(ErrorKind::Unsupported, "unsupported file: unknown geometry coder " + std::to_string(geometry));
     h.geometryCoder = GeometryCoder(geometry);
     for (double& o : h.grid.origin) o = in.f64("bounding box origin");
@@ -108,8 +109,7 @@ std::string headerProblem(const FileHeader& h) {
     if (!grid.empty()) return grid;
     if (h.predictor != Predictor::Parallelogram && h.predictor != Predictor::Midpoint)
         return "unknown predictor " + std::to_string(int(h.predictor));
-    if (h.geometryCoder != GeometryCoder::Raw && h.geometryCoder != GeometryCoder::SpanningTree &&
-        h.geometryCoder != GeometryCoder::Refine)
+    if (!geometryCoderOf(h.geometryCoder))
         return "unknown geometry coder " + std::to_string(int(h.geometryCoder));
     if (h.vertexCount == 0 || h.vertexCount > kMaxVertexCount)
         return std::to_string(h.vertexCount) + " vertices (a file holds 1 to " + std::to_string(kMaxVertexCount) + ")";
@@ -132,7 +132,7 @@ std::string headerProblem(const FileHeader& h) {
 std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
                                const std::vector<uint8_t>& geometry, const std::vector<uint8_t>& vertexOrder,
                                const std::vector<uint8_t>& repairs,
-                               const std::vector<std::vector<uint8_t>>& attributes, size_t* headerBytes) {
+                               const std::vector<std::vector<uint8_t>>& attributes, FileParts* written) {
     FileHeader withCount = header;
     withCount.attributeSections = attributes.size();
     // Never a file the reader refuses: the reader's own test of the header.
@@ -148,9 +148,21 @@ std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8
     if (header.hasRepairs) writeSection(out, repairs);
     const size_t beforeAttributes = out.size();
     for (const std::vector<uint8_t>& a : attributes) writeSection(out, a);
-    if (headerBytes)
-        *headerBytes = beforeAttributes - connectivity.size() - geometry.size() -
-                       (header.keepsVertexOrder ? vertexOrder.size() : 0) - (header.hasRepairs ? repairs.size() : 0);
+    if (written) {
+        // The sizes readFile finds in this file (payloads without framing).
+        FileParts& parts = *written;
+        parts = FileParts();
+        parts.formatVersion = kFormatVersion;
+        parts.connectivitySize = connectivity.size();
+        parts.geometrySize = geometry.size();
+        parts.vertexOrderSize = header.keepsVertexOrder ? vertexOrder.size() : 0;
+        parts.repairsSize = header.hasRepairs ? repairs.size() : 0;
+        for (const std::vector<uint8_t>& a : attributes) parts.attributes.push_back({nullptr, a.size()});
+        parts.attributeBytes = out.size() - beforeAttributes;
+        parts.headerBytes = out.size() - parts.connectivitySize - parts.geometrySize - parts.vertexOrderSize -
+                            parts.repairsSize - parts.attributeBytes;
+        parts.header = std::move(withCount);
+    }
     return std::move(out.buffer());
 }
 
@@ -199,26 +211,6 @@ FileParts readFile(const uint8_t* data, size_t size) {
     parts.headerBytes = size - parts.connectivitySize - parts.geometrySize - parts.vertexOrderSize - parts.repairsSize -
                         parts.attributeBytes;
     return parts;
-}
-
-void fillStatsFromHeader(Stats& stats, const FileParts& parts, size_t fileSize) {
-    const FileHeader& header = parts.header;
-    stats.vertices = header.vertexCount;
-    stats.faces = header.faceCount;
-    stats.components = header.startTriangles.size() / 3;
-    stats.bits = header.grid.bits;
-    stats.predictor = header.predictor;
-    stats.curvature = header.curvature;
-    stats.levers = header.levers;
-    stats.geometry = header.geometryCoder;
-    stats.headerBytes = parts.headerBytes;
-    stats.connectivityBytes = parts.connectivitySize;
-    stats.geometryBytes = parts.geometrySize;
-    stats.vertexOrderBytes = parts.vertexOrderSize;
-    stats.repairBytes = parts.repairsSize;
-    stats.splitVertices = header.copyCount;
-    stats.attributeBytes = parts.attributes.empty() ? 0 : parts.attributeBytes;
-    stats.totalBytes = fileSize;
 }
 
 }  // namespace drm

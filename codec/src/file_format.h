@@ -76,17 +76,13 @@ std::string headerProblem(const FileHeader& header);
 
 // vertexOrder is written iff header.keepsVertexOrder, then repairs iff
 // header.hasRepairs, then the attribute sections (their count and flag are
-// set from the list, whatever header says).
+// set from the list, whatever header says). *written, if given, gets the
+// file's header and section table as readFile would give them (sizes
+// only; the payload pointers are left null), for fillStatsFromHeader.
 std::vector<uint8_t> writeFile(const FileHeader& header, const std::vector<uint8_t>& connectivity,
                                const std::vector<uint8_t>& geometry, const std::vector<uint8_t>& vertexOrder,
                                const std::vector<uint8_t>& repairs,
-                               const std::vector<std::vector<uint8_t>>& attributes, size_t* headerBytes);
-
-// The figures of Stats that the header and section table give (counts,
-// options, section sizes, total), shared by inspect() and decode(); those
-// that need a payload decoded (ranks, refine bits, attribute names, decoded
-// vertex count) are the caller's.
-void fillStatsFromHeader(Stats& stats, const FileParts& parts, size_t fileSize);
+                               const std::vector<std::vector<uint8_t>>& attributes, FileParts* written);
 
 // Checks signature, version, section lengths and checksums, and every header
 // field's range; the payloads are returned as pointers into data.

@@ -132,13 +132,13 @@ FlannIndex::FlannIndex(const std::vector<int32_t>& grid) : grid_(grid) {
 }
 
 void FlannIndex::remove(uint32_t v) {
-    if (v >= presentSlot_.size() || presentSlot_[v] == kNoVertex) return;
+    if (v >= presentSlot_.size() || presentSlot_[v] == kNotPresent) return;
     tree_->removePoint(v);
     const uint32_t at = presentSlot_[v], moved = present_.back();
     present_[at] = moved;
     presentSlot_[moved] = at;
     present_.pop_back();
-    presentSlot_[v] = kNoVertex;
+    presentSlot_[v] = kNotPresent;
 }
 
 double FlannIndex::floatQuery(const FixedPoint& p, float q[3]) const {

@@ -8,7 +8,7 @@ namespace {
 
 // Walks the rebuilt fan around `center` from the triangle (center, start, o)
 // in the direction that leaves through edges into center, and returns the far
-// vertex of the fan's last open edge, or kNoGapVertex if the fan ends on a
+// vertex of the fan's last open edge, or kNoVertex if the fan ends on a
 // coded boundary. `clockwise` picks the walking direction:
 //  false: from (vi, vj, o) at vi, the edge into vi is (o, vi); its twin (vi, o)
 //         holds the next triangle (vi, o, o2), whose edge into vi is (o2, vi)...
@@ -20,10 +20,10 @@ uint32_t fanEnd(const Traversal& t, uint32_t center, uint32_t o, bool clockwise)
     for (size_t step = 0; step < t.vertexCount(); ++step) {
         const uint32_t next = clockwise ? t.thirdVertex(far, center) : t.thirdVertex(center, far);
         if (next == Traversal::kNoTriangle) return far;
-        if (next == Traversal::kBoundary) return kNoGapVertex;
+        if (next == Traversal::kBoundary) return kNoVertex;
         far = next;
     }
-    return kNoGapVertex;
+    return kNoVertex;
 }
 
 // Cosine of the angle at `at` between the directions to p and q, compared
@@ -45,16 +45,16 @@ uint32_t gapClosingVertex(const OpenEdge& edge, const std::vector<int32_t>& grid
     const uint32_t atI = fanEnd(t, edge.vi, edge.opposite, false);
     const uint32_t atJ = fanEnd(t, edge.vj, edge.opposite, true);
     const Vec3 a = gridPoint(grid, edge.vi), b = gridPoint(grid, edge.vj);
-    uint32_t best = kNoGapVertex;
+    uint32_t best = kNoVertex;
     double bestCosine2 = 0;
     double cosine2 = 0;
-    if (atI != kNoGapVertex && atI != edge.opposite && admissible(atI, edge) &&
+    if (atI != kNoVertex && atI != edge.opposite && admissible(atI, edge) &&
         narrowerThan60(a, b, gridPoint(grid, atI), &cosine2)) {
         best = atI;
         bestCosine2 = cosine2;
     }
-    if (atJ != kNoGapVertex && atJ != edge.opposite && admissible(atJ, edge) &&
-        narrowerThan60(b, a, gridPoint(grid, atJ), &cosine2) && (best == kNoGapVertex || cosine2 > bestCosine2)) {
+    if (atJ != kNoVertex && atJ != edge.opposite && admissible(atJ, edge) &&
+        narrowerThan60(b, a, gridPoint(grid, atJ), &cosine2) && (best == kNoVertex || cosine2 > bestCosine2)) {
         best = atJ;
     }
     return best;

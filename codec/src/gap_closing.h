@@ -10,13 +10,12 @@
 #include <vector>
 
 #include "admissibility.h"
+#include "common.h"
 
 namespace drm {
 
-constexpr uint32_t kNoGapVertex = 0xFFFFFFFFu;
-
 // The admissible vertex that closes the narrower gap (under 60 degrees) at
-// either end of edge, or kNoGapVertex.
+// either end of edge, or kNoVertex.
 uint32_t gapClosingVertex(const OpenEdge& edge, const std::vector<int32_t>& grid, const Admissibility& admissible);
 
 }  // namespace drm

@@ -12,7 +12,6 @@
 namespace drm {
 namespace {
 
-constexpr uint32_t kNone = 0xFFFFFFFFu;
 // Predictions carry kFraction bits below the grid step.
 constexpr int kFraction = 2;
 constexpr int64_t kScale = int64_t(1) << kFraction;

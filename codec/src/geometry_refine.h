@@ -19,12 +19,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "drm/drm.h"
+
 namespace drm {
 
 // The encoder tries lowBits 1..kMaxTriedRefineBits; a file may hold up to
-// kMaxRefineBits (always fewer than the quantization bits).
-constexpr int kMaxRefineBits = 8;
-constexpr int kMaxTriedRefineBits = 5;
+// kMaxRefineBits (always fewer than the quantization bits): both in drm.h.
 
 // How a vertex's full position is predicted (the encoder tries each and
 // records the best in the section):

@@ -11,11 +11,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "common.h"
+
 namespace drm {
 
 class HalfEdgeMap {
 public:
-    static constexpr uint32_t kAbsent = 0xFFFFFFFFu;
+    // The answer for a key not in the map. It is kNoVertex, so a map of
+    // vertices (MeshTopology's apexes) answers "no vertex" as it is.
+    static constexpr uint32_t kAbsent = kNoIndex;
 
     // expectedEdges: how many edges will be inserted (the table never grows
     // past twice that without rehashing, so a good guess keeps it fast).

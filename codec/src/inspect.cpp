@@ -4,7 +4,8 @@
 #include "attribute_sections.h"
 #include "drm/drm.h"
 #include "file_format.h"
-#include "geometry_refine.h"
+#include "geometry_coders.h"
+#include "stats.h"
 
 namespace drm {
 
@@ -17,8 +18,8 @@ FileInfo inspect(const uint8_t* data, size_t size) {
     info.hasRepairs = header.hasRepairs;
     Stats& stats = info.stats;
     fillStatsFromHeader(stats, parts, size);
-    if (header.geometryCoder == GeometryCoder::Refine)
-        stats.refineBits = readRefinePayload(parts.geometry, parts.geometrySize, header.grid.bits).lowBits;
+    // readFile has refused any id the table lacks.
+    stats.refineBits = geometryCoderOf(header.geometryCoder)->refineBits(parts.geometry, parts.geometrySize, header.grid.bits);
     for (const FileParts::Payload& p : parts.attributes)
         stats.attributeSizes.push_back({attributeSectionName(p.data, p.size), p.size});
     return info;

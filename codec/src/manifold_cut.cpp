@@ -10,20 +10,18 @@
 namespace drm {
 namespace {
 
-constexpr uint32_t kNone = 0xFFFFFFFFu;
-
 // Slot 3f + e is edge e of kept face f, from corner e to corner e + 1; it is
 // also the name of corner e.
 uint32_t nextSlot(uint32_t s) { return s - s % 3 + (s % 3 + 1) % 3; }
 
 struct Joins {
-    std::vector<uint32_t> partner;  // slot -> the slot across the edge, or kNone
+    std::vector<uint32_t> partner;  // slot -> the slot across the edge, or kNoIndex
     std::vector<uint8_t> sameDirection;
 
     void cut(uint32_t s) {
         const uint32_t p = partner[s];
-        if (p == kNone) return;
-        partner[s] = partner[p] = kNone;
+        if (p == kNoIndex) return;
+        partner[s] = partner[p] = kNoIndex;
     }
 };
 
@@ -41,7 +39,7 @@ Joins findJoins(const std::vector<uint32_t>& t) {
     }
     std::sort(uses.begin(), uses.end());
     Joins joins;
-    joins.partner.assign(t.size(), kNone);
+    joins.partner.assign(t.size(), kNoIndex);
     joins.sameDirection.assign(t.size(), 0);
     for (size_t i = 0; i < uses.size();) {
         size_t j = i + 1;
@@ -70,7 +68,7 @@ std::vector<uint8_t> orient(Joins& joins, size_t faceCount) {
             const uint32_t f = queue[q];
             for (uint32_t s = 3 * f; s < 3 * f + 3; ++s) {
                 const uint32_t p = joins.partner[s];
-                if (p == kNone) continue;
+                if (p == kNoIndex) continue;
                 const uint32_t g = p / 3;
                 const uint8_t wanted = flip[f] ^ joins.sameDirection[s];
                 if (!seen[g]) {
@@ -94,7 +92,7 @@ std::vector<uint32_t> numberFans(const std::vector<uint32_t>& t, const Joins& jo
     UnionFind fans(t.size());
     for (uint32_t s = 0; s < t.size(); ++s) {
         const uint32_t p = joins.partner[s];
-        if (p == kNone || p < s) continue;
+        if (p == kNoIndex || p < s) continue;
         // Edge s runs a -> b. If p runs the same way its corners pair up
         // in the same order, otherwise crosswise.
         if (joins.sameDirection[s]) {
@@ -106,17 +104,17 @@ std::vector<uint32_t> numberFans(const std::vector<uint32_t>& t, const Joins& jo
         }
     }
     copyOf.clear();
-    std::vector<uint32_t> vertexOfFan(t.size(), kNone), corner(t.size());
+    std::vector<uint32_t> vertexOfFan(t.size(), kNoVertex), corner(t.size());
     std::vector<uint8_t> taken(vertexCount, 0);
     for (uint32_t c = 0; c < t.size(); ++c) {
         const uint32_t fan = fans.root(c);
-        if (vertexOfFan[fan] == kNone) {
+        if (vertexOfFan[fan] == kNoVertex) {
             const uint32_t v = t[c];
             if (!taken[v]) {
                 taken[v] = 1;
                 vertexOfFan[fan] = v;
             } else {
-                if (vertexCount + copyOf.size() >= kNone)
+                if (vertexCount + copyOf.size() >= kNoVertex)
                     throw Error(ErrorKind::InvalidInput, "the mesh is too large to cut into manifold pieces: over 2^32-2 vertices");
                 vertexOfFan[fan] = uint32_t(vertexCount + copyOf.size());
                 copyOf.push_back(v);
@@ -137,7 +135,7 @@ std::array<uint32_t, 3> canonical(const uint32_t* v) {
 }
 
 // For each input face: the earlier face over the same three vertices, or
-// kNone.
+// kNoIndex.
 std::vector<uint32_t> findRepeatedFaces(const std::vector<uint32_t>& triangles) {
     const size_t faceCount = triangles.size() / 3;
     std::vector<std::array<uint32_t, 4>> sorted(faceCount);  // sorted vertices, face
@@ -147,7 +145,7 @@ std::vector<uint32_t> findRepeatedFaces(const std::vector<uint32_t>& triangles) 
         sorted[f] = key;
     }
     std::sort(sorted.begin(), sorted.end());
-    std::vector<uint32_t> earlier(faceCount, kNone);
+    std::vector<uint32_t> earlier(faceCount, kNoIndex);
     size_t first = 0;  // of the run of faces over the same vertices
     for (size_t i = 1; i < faceCount; ++i) {
         if (std::equal(sorted[i].begin(), sorted[i].begin() + 3, sorted[first].begin()))
@@ -163,14 +161,14 @@ std::vector<uint32_t> findRepeatedFaces(const std::vector<uint32_t>& triangles) 
 ManifoldCut cutIntoManifold(const std::vector<uint32_t>& triangles, size_t vertexCount) {
     ManifoldCut cut;
     const std::vector<uint32_t> earlier = findRepeatedFaces(triangles);
-    std::vector<uint32_t> keptIndex(triangles.size() / 3, kNone);
+    std::vector<uint32_t> keptIndex(triangles.size() / 3, kNoIndex);
     std::vector<uint32_t> kept;  // kept faces, input orientation
     for (size_t f = 0; f < triangles.size() / 3; ++f) {
         const uint32_t* v = &triangles[3 * f];
         if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) {
             cut.looseTriangles.insert(cut.looseTriangles.end(), v, v + 3);
             cut.looseInputFace.push_back(uint32_t(f));
-        } else if (earlier[f] != kNone) {
+        } else if (earlier[f] != kNoIndex) {
             const uint32_t g = earlier[f];  // kept: the first of its vertex set
             cut.duplicateOf.push_back(keptIndex[g]);
             cut.duplicateReversed.push_back(uint8_t(canonical(v) != canonical(&triangles[3 * size_t(g)])));

@@ -17,11 +17,11 @@ std::string faceText(const std::vector<uint32_t>& t, size_t f) {
 uint32_t MeshTopology::apexAcross(uint32_t a, uint32_t b, uint32_t* face) const {
     const uint32_t g = faceOfHalfEdge.find(b, a);
     if (face) *face = g;
-    if (g == HalfEdgeMap::kAbsent) return HalfEdgeMap::kAbsent;
+    if (g == HalfEdgeMap::kAbsent) return kNoVertex;
     const uint32_t* t = triangles->data() + 3 * size_t(g);
     for (int k = 0; k < 3; ++k)
         if (t[k] == b) return t[(k + 2) % 3];
-    return HalfEdgeMap::kAbsent;  // unreachable for a table built by checkMesh
+    return kNoVertex;  // unreachable for a table built by checkMesh
 }
 
 void checkIndices(const Mesh& mesh) {
@@ -29,7 +29,7 @@ void checkIndices(const Mesh& mesh) {
     const size_t vertexCount = mesh.vertexCount();
     const size_t faceCount = mesh.faceCount();
     if (t.size() % 3 != 0) throw Error(ErrorKind::InvalidInput, "the triangle array does not hold whole index triples");
-    if (vertexCount >= 0xFFFFFFFFu || faceCount >= 0x55555555u)
+    if (vertexCount >= kNoVertex || faceCount >= 0x55555555u)
         throw Error(ErrorKind::InvalidInput, "the mesh is too large: at most 2^32-2 vertices and 1431655764 faces are supported");
     for (size_t f = 0; f < faceCount; ++f)
         for (int k = 0; k < 3; ++k)

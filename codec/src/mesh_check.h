@@ -15,7 +15,7 @@ struct MeshTopology {
     HalfEdgeMap faceOfHalfEdge;  // directed edge (a, b) -> the face that holds it
 
     // The vertex c such that (b, a, c) is a face, i.e. the apex of the
-    // triangle on the other side of the directed edge (a, b); kAbsent on a
+    // triangle on the other side of the directed edge (a, b); kNoVertex on a
     // boundary. *face receives that face's index.
     uint32_t apexAcross(uint32_t a, uint32_t b, uint32_t* face) const;
 };

@@ -12,6 +12,7 @@
 #include "file_format.h"
 #include "progress.h"
 #include "quantize.h"
+#include "stats.h"
 #include "verify.h"
 
 namespace drm {
@@ -55,15 +56,12 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
         if (welded)
             for (uint32_t& v : layout.vertexInput) v = welding.representative[v];
         const AttributeEncoding attributes = encodeAttributeSections(mesh, options, layout);
-        size_t headerBytes = 0;
+        FileParts written;
         result.bytes = writeFile(attempt.header, attempt.connectivity, attempt.geometry, attempt.vertexOrder,
-                                 attempt.repairs, attributes.sections, &headerBytes);
+                                 attempt.repairs, attributes.sections, &written);
         Stats& stats = result.stats;
-        stats.headerBytes = headerBytes;
+        fillStatsFromHeader(stats, written, result.bytes.size());  // the sizes, now with attribute sections
         stats.attributeSizes = attributes.sizes;
-        stats.attributeBytes = result.bytes.size() - headerBytes - stats.connectivityBytes - stats.geometryBytes -
-                               stats.vertexOrderBytes - stats.repairBytes;
-        stats.totalBytes = result.bytes.size();
         if (welded) {
             result.vertexOrder = attributes.splitVertexInput;
             result.quantized = inputGrid;

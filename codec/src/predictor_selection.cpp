@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "common.h"
 #include "predictor.h"
 #include "quantize.h"
 #include "traversal.h"
@@ -32,7 +33,7 @@ PredictorVotes countPredictorVotes(const Mesh& mesh, const MeshTopology& topolog
         while (traversal.popOpenEdge(edge)) {
             uint32_t face = 0;
             const uint32_t apex = topology.apexAcross(edge.vi, edge.vj, &face);
-            if (apex == HalfEdgeMap::kAbsent) {
+            if (apex == kNoVertex) {
                 traversal.closeAsBoundary(edge);
                 continue;
             }

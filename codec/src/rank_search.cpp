@@ -39,7 +39,7 @@ uint32_t RankSearch::rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& 
     if (apex == preferred) return 1;
     const int64_t apexDistance = distance2(p, apex);
     index_.collectNear(toGridUnits(p), std::sqrt(double(apexDistance)) / kSubUnits, nearby_);
-    uint32_t closer = preferred == kNoPreference ? 0 : 1;
+    uint32_t closer = preferred == kNoVertex ? 0 : 1;
     for (uint32_t v : nearby_) {
         if (v == apex || v == preferred) continue;
         const int64_t d = distance2(p, v);
@@ -49,7 +49,7 @@ uint32_t RankSearch::rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& 
 }
 
 uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const OpenEdge& edge, uint32_t preferred) {
-    if (preferred != kNoPreference) {
+    if (preferred != kNoVertex) {
         if (rank == 1) return preferred;
         --rank;
     }

@@ -19,8 +19,6 @@
 
 namespace drm {
 
-constexpr uint32_t kNoPreference = 0xFFFFFFFFu;
-
 // The prediction on the fixed-point grid, clamped well outside the model's
 // box so that squared distances cannot overflow.
 FixedPoint snapPrediction(Vec3 prediction, int bits);
@@ -31,17 +29,17 @@ public:
                const Admissibility& admissible);
 
     // Encoder: the rank of apex (>= 1).
-    uint32_t rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred = kNoPreference);
+    uint32_t rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred = kNoVertex);
 
     // Decoder: the vertex of the given rank (>= 1). Throws Error if there
     // are fewer admissible vertices.
     uint32_t vertexOfRank(const FixedPoint& p, uint32_t rank, const OpenEdge& edge,
-                          uint32_t preferred = kNoPreference);
+                          uint32_t preferred = kNoVertex);
 
     // The `count` admissible vertices nearest p other than `skip`, nearest
     // first; fewer if fewer exist.
     const std::vector<RankedVertex>& nearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
-                                             uint32_t skip = kNoPreference);
+                                             uint32_t skip = kNoVertex);
 
     int64_t distance2(const FixedPoint& p, uint32_t v) const;
 

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "common.h"
 #include "drm/drm.h"
 #include "rank_coder.h"
 
@@ -13,16 +14,13 @@ namespace {
 // Bits for an index below count: at least one, so that every index costs
 // a bit and a count times the width bounds the bytes it needs.
 int indexBits(uint64_t count) {
-    int n = 1;
-    while (n < 32 && (uint64_t(1) << n) < count) ++n;
-    return n;
+    return count <= 2 ? 1 : std::min(32, bitLength(count - 1));
 }
 
 // Elias gamma code of x >= 1 in plain bits: as many zeros as x has bits
 // after its leading one, a one, then those bits.
 void putGamma(RangeEncoder& coder, uint64_t x) {
-    int n = 0;
-    while (n < 63 && (x >> (n + 1)) != 0) ++n;
+    const int n = std::max(0, bitLength(x) - 1);
     for (int i = 0; i < n; ++i) coder.encodeBits(0, 1);
     coder.encodeBits(1, 1);
     coder.encodeWideBits(x, n);

@@ -34,10 +34,7 @@ using RankedVertex = std::pair<int64_t, uint32_t>;
 // Squared distance from p to grid vertex v, in fixed-point units (1/16 of a
 // grid step): the one distance every search is decided by.
 inline int64_t fixedDistance2(const std::vector<int32_t>& grid, const FixedPoint& p, uint32_t v) {
-    const int64_t dx = int64_t(grid[3 * size_t(v)]) * kSubUnits - p.x;
-    const int64_t dy = int64_t(grid[3 * size_t(v) + 1]) * kSubUnits - p.y;
-    const int64_t dz = int64_t(grid[3 * size_t(v) + 2]) * kSubUnits - p.z;
-    return dx * dx + dy * dy + dz * dz;
+    return fixedDistance2(grid.data() + 3 * size_t(v), p);
 }
 
 inline FixedPoint fixedPointOf(const std::vector<int32_t>& grid, uint32_t v) {

@@ -8,7 +8,6 @@
 namespace drm {
 namespace {
 
-constexpr uint32_t kRemoved = 0xFFFFFFFFu;
 constexpr int kMaxShift = 26;  // coordinates span less than 2^26 (real grids: 2^21)
 
 // Mean vertices per occupied cell the cell size aims at. Around an edge the
@@ -138,7 +137,7 @@ VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
 }
 
 void VertexIndex::remove(uint32_t v) {
-    if (v >= presentSlot_.size() || presentSlot_[v] == kRemoved) return;
+    if (v >= presentSlot_.size() || presentSlot_[v] == kNotPresent) return;
     // Swap v behind the present vertices of its cell...
     const uint32_t c = cellOfVertex_[v];
     const uint32_t last = cellStart_[c] + --cellPresent_[c];
@@ -154,7 +153,7 @@ void VertexIndex::remove(uint32_t v) {
     present_[at] = moved;
     presentSlot_[moved] = at;
     present_.pop_back();
-    presentSlot_[v] = kRemoved;
+    presentSlot_[v] = kNotPresent;
 }
 
 void VertexIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out, std::vector<int32_t>* points) const {

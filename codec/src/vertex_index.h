@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common.h"
 #include "exact_math.h"
 
 namespace drm {
@@ -117,7 +118,7 @@ private:
     // columnCells_[i + 1] - 1, by increasing z. Only occupied columns are
     // stored, so the cells can be as fine as the vertices ask whatever the
     // extent of the box.
-    static constexpr uint32_t kNoColumn = 0xFFFFFFFFu;
+    static constexpr uint32_t kNoColumn = kNoIndex;
     static uint64_t columnKey(int64_t x, int64_t y) { return (uint64_t(x) << 32) | uint64_t(y); }
     uint32_t findColumn(int64_t x, int64_t y) const {  // kNoColumn if empty or outside
         if (x < 0 || y < 0 || x > lastCell_ || y > lastCell_) return kNoColumn;
@@ -176,10 +177,7 @@ void VertexIndex::nearestFew(const FixedPoint& p, size_t count, Distance distanc
     };
     auto visit = [&](const uint32_t* first, const int32_t* points, size_t n) {
         for (size_t i = 0; i < n; ++i, points += 3) {
-            // fixedDistance2, from the coordinates stored in the cell.
-            const int64_t dx = int64_t(points[0]) * kSubUnits - p.x, dy = int64_t(points[1]) * kSubUnits - p.y,
-                          dz = int64_t(points[2]) * kSubUnits - p.z;
-            const int64_t d2 = dx * dx + dy * dy + dz * dz;
+            const int64_t d2 = fixedDistance2(points, p);  // from the coordinates stored in the cell
             if (d2 > bound) continue;
             consider({d2, first[i]});
         }

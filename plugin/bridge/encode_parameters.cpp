@@ -15,8 +15,9 @@ const char* const kVerifyLabel = "Verify";
 
 namespace {
 
-const int kMinBits = 1;
-const int kMaxBits = 21;
+// drm.h's range, so the dialog, its help and its refusals say what the codec takes.
+const int kMinBits = drm::kMinQuantizationBits;
+const int kMaxBits = drm::kMaxQuantizationBits;
 
 // The enum's entries in the order of the list MeshLab shows; parsed back
 // through drm::parsePredictor so the names cannot drift from the codec's.
@@ -38,9 +39,10 @@ void addQuantizationAndPredictor(RichParameterList& parameters) {
     // the field in a narrow column the save dialog cuts after two lines:
     // short and complete; README.md's MeshLab section says more.
     parameters.addParam(RichInt(kBitsParameter, drm::EncodeOptions().bits, kBitsLabel,
-                                QString("Grid bits per axis, %1 to %2 (12: the paper's). Lossless on that grid.")
+                                QString("Grid bits per axis, %1 to %2 (%3: the paper's). Lossless on that grid.")
                                     .arg(kMinBits)
-                                    .arg(kMaxBits)));
+                                    .arg(kMaxBits)
+                                    .arg(drm::kDefaultQuantizationBits)));
     QStringList names;
     for (drm::Predictor p : kPredictorChoices) names << drm::predictorName(p);
     parameters.addParam(RichEnum(kPredictorParameter, defaultPredictorIndex(), names, kPredictorLabel,
@@ -70,9 +72,15 @@ drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters) {
     }
     if (parameters.hasParameter(kPredictorParameter)) {
         const int index = parameters.getEnum(kPredictorParameter);
-        if (index < 0 || index >= kPredictorChoiceCount)
-            throw drm::Error(drm::ErrorKind::InvalidInput, std::string(kPredictorLabel) + " must be 0 (auto), 1 (parallelogram) or 2 "
-                             "(midpoint), not " + std::to_string(index));
+        if (index < 0 || index >= kPredictorChoiceCount) {
+            // "0 (auto), 1 (parallelogram) or 2 (midpoint)": the codec's names.
+            std::string choices;
+            for (int i = 0; i < kPredictorChoiceCount; ++i)
+                choices += std::string(i == 0 ? "" : (i + 1 == kPredictorChoiceCount ? " or " : ", ")) +
+                           std::to_string(i) + " (" + drm::predictorName(kPredictorChoices[i]) + ")";
+            throw drm::Error(drm::ErrorKind::InvalidInput,
+                             std::string(kPredictorLabel) + " must be " + choices + ", not " + std::to_string(index));
+        }
         options.predictor = kPredictorChoices[index];
     }
     if (parameters.hasParameter(kKeepVertexOrderParameter))

@@ -39,10 +39,13 @@ bool hasNoteContaining(const drm::vcgio::LoadedMesh& loaded, const std::string& 
     return false;
 }
 
+// A file the reader refuses is InvalidInput; the message, which names the
+// file, the element and the attribute for the user, is what the tests read.
 std::string errorOf(const std::string& path) {
     try {
         loadMesh(path);
     } catch (const drm::Error& e) {
+        EXPECT_EQ(e.kind(), drm::ErrorKind::InvalidInput) << e.what();
         return e.what();
     }
     return "";

@@ -35,6 +35,8 @@ TEST(WriteFileAtomically, ReportsAMissingFolder) {
         drm::vcgio::writeFileAtomically(dir.file("no/such/folder/x.drm"), std::vector<uint8_t>{1});
         FAIL() << "expected drm::Error";
     } catch (const drm::Error& e) {
+        EXPECT_EQ(e.kind(), drm::ErrorKind::Io) << e.what();
+        // The user's message names the file: checked as text.
         EXPECT_EQ(std::string(e.what()).rfind("cannot write " + dir.file("no/such/folder/x.drm") + ": ", 0), 0u)
             << e.what();
     }
@@ -58,6 +60,7 @@ TEST(ReadFileBytes, NamesTheFileWhenItIsMissing) {
         drm::vcgio::readFileBytes(dir.file("missing.drm"));
         FAIL() << "expected drm::Error";
     } catch (const drm::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("cannot read " + dir.file("missing.drm")), std::string::npos);
+        EXPECT_EQ(e.kind(), drm::ErrorKind::Io) << e.what();
+        EXPECT_NE(std::string(e.what()).find("cannot read " + dir.file("missing.drm")), std::string::npos);  // names it
     }
 }

@@ -121,6 +121,8 @@ TEST(FileReplacement, RefusesAReadOnlyFileInAWritableFolder) {
         drm::vcgio::writeFileAtomically(path, kNewBytes);
         FAIL() << "a read-only file was replaced";
     } catch (const drm::Error& e) {
+        EXPECT_EQ(e.kind(), drm::ErrorKind::Io) << e.what();
+        // The sentence the user reads (it says why, not only that it failed).
         const std::string message = e.what();
         EXPECT_NE(message.find("cannot write " + path + ": the file is read-only for you"), std::string::npos)
             << message;

@@ -50,10 +50,12 @@ bool hasNoteContaining(const drm::vcgio::LoadedMesh& loaded, const std::string& 
     return false;
 }
 
-std::string errorOf(const std::string& path) {
+// The message of loadMesh's refusal ("" if none), and its kind in *kind.
+std::string errorOf(const std::string& path, drm::ErrorKind* kind = nullptr) {
     try {
         loadMesh(path);
     } catch (const drm::Error& e) {
+        if (kind) *kind = e.kind();
         return e.what();
     }
     return "";
@@ -227,7 +229,12 @@ TEST(LoadMesh, ErrorsNameTheFileAndTheReason) {
         {"byte-indices.ply", ""},  // vcglib misreads uchar indices; any refusal will do
     };
     for (const auto& c : cases) {
-        const std::string message = errorOf(dir.file(c.first));
+        drm::ErrorKind kind = drm::ErrorKind::Internal;
+        const std::string message = errorOf(dir.file(c.first), &kind);
+        // A file that cannot be opened is Io; one that opens but holds no
+        // mesh the codec can take is InvalidInput.
+        EXPECT_EQ(kind, c.first == "missing.ply" ? drm::ErrorKind::Io : drm::ErrorKind::InvalidInput) << message;
+        // The sentence the user reads names the file and what is wrong in it.
         EXPECT_EQ(message.rfind("cannot read " + dir.file(c.first) + ": ", 0), 0u) << message;
         EXPECT_NE(message.find(c.second), std::string::npos) << message;
     }

@@ -44,7 +44,7 @@ expect_png() {
 }
 
 # palette_colour NAME: the hex colour `drm ranks` lists for a bucket of the
-# rank palette ("rank 1", ...), so the tests follow rank_palette.h.
+# rank palette ("rank 1", ...), so the tests follow drm.h's palette.
 palette_colour() {
     "$drm" ranks "$data/torus.ply" palette.ply >palette.txt 2>&1 || fail "ranks for the palette: $(cat palette.txt)"
     sed -n "s/^  $1  *#\([0-9a-f]\{6\}\) .*/\1/p" palette.txt
@@ -302,8 +302,33 @@ readme_palette)
         hex=$(palette_colour "$bucket")
         [ -n "$hex" ] || fail "drm ranks lists no colour for $bucket"
         grep -q "#$hex" "$readme" || fail "README.md does not give $bucket's colour #$hex"
+        # ... and `drm help ranks` names each colour as README's table does.
+        name=$(sed -n "s/^| \([a-z -]*\) | \`#$hex\` |.*/\1/p" "$readme")
+        run 0 help ranks
+        tr '\n' ' ' <out.txt | grep -q "$name: " || fail "drm help ranks does not name $bucket's colour '$name'"
     done
     ! grep -qi "#8c9aae" "$readme" || fail "README.md names the old rank-1 colour"
+    ;;
+readme_limits)
+    # README.md and docs/format.md quote the limits and names drm.h holds,
+    # as `drm help encode` (filled in from drm.h) and a written file give them.
+    readme="$data/../../README.md"
+    format="$data/../../docs/format.md"
+    run 0 help encode
+    range=$(sed -n 's/.*quantization bits per axis, \([0-9]*\.\.[0-9]*\) .*/\1/p' out.txt)
+    [ -n "$range" ] || fail "help encode gives no bits range: $(cat out.txt)"
+    grep -q "(${range%..*} to ${range#*..} bits per axis" "$readme" || fail "README.md does not give the bits range $range"
+    grep -q "| quantization bits per axis | $range |" "$format" || fail "docs/format.md does not give the bits range $range"
+    levers=$(sed -n 's/.*a list of \(.*\) (see docs.*/\1/p' out.txt | sed 's/, /,/g')
+    grep -q -- "--levers all|none|$levers]" "$readme" || fail "README.md's levers are not $levers"
+    coders=$(sed -n 's/.*vertex coder: \(.*\) (default.*/\1/p' out.txt | sed 's/, /|/g; s/ or /|/')
+    grep -q -- "--geometry $coders]" "$readme" || fail "README.md's geometry coders are not $coders"
+    predictors=$(sed -n 's/.*apex predictor: \(.*\) (default.*/\1/p' out.txt | sed 's/, /|/g; s/ or /|/')
+    grep -q -- "--predictor $predictors]" "$readme" || fail "README.md's predictors are not $predictors"
+    run 0 encode "$data/torus.ply" torus.drm
+    version=$(od -An -tu2 -j8 -N2 torus.drm | tr -d ' ')
+    grep -q "^# The \`.drm\` file format, version $version\$" "$format" || fail "docs/format.md is not about version $version"
+    grep -q "format version, \`u16\` = $version |" "$format" || fail "docs/format.md's version field is not $version"
     ;;
 render)
     # A closed mesh, grey: the requested size, no cracks between triangles

@@ -148,7 +148,11 @@ TEST(IoPlugin, ABadOptionIsNamedByTheDialogsLabel) {
     f.parameters.setValue(drm_meshlab::kBitsParameter, IntValue(22));
     ScratchDir dir;
     EXPECT_FALSE(f.save(dir.file("grid.drm")));
-    EXPECT_NE(f.plugin.errorMsg().toStdString().find("Quantization bits must be between 1 and 21, not 22"),
+    // MeshLab shows this text to the user: the text is the behaviour.
+    EXPECT_NE(f.plugin.errorMsg().toStdString().find("Quantization bits must be between " +
+                                                     std::to_string(drm::kMinQuantizationBits) + " and " +
+                                                     std::to_string(drm::kMaxQuantizationBits) + ", not " +
+                                                     std::to_string(drm::kMaxQuantizationBits + 1)),
               std::string::npos)
         << f.plugin.errorMsg().toStdString();
     EXPECT_EQ(dir.entries().size(), 0u);

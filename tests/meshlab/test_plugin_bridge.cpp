@@ -205,6 +205,9 @@ TEST(ExportDialog, HelpIsShortAndErrorsUseTheLabels) {
         drm_meshlab::encodeOptionsFrom(parameters);
         FAIL() << "0 bits accepted";
     } catch (const drm::Error& e) {
-        EXPECT_STREQ(e.what(), "Quantization bits must be between 1 and 21, not 0");
+        EXPECT_EQ(e.kind(), drm::ErrorKind::InvalidInput);
+        // The sentence MeshLab shows, naming the dialog's label and drm.h's range.
+        EXPECT_EQ(std::string(e.what()), "Quantization bits must be between " + std::to_string(drm::kMinQuantizationBits) +
+                                             " and " + std::to_string(drm::kMaxQuantizationBits) + ", not 0");
     }
 }

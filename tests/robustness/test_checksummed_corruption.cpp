@@ -120,7 +120,7 @@ TEST(ChecksummedCorruption, LengthenedPayloadsAreRefusedOrSound) {
                     const std::string label =
                         where(s, section) + " + " + std::to_string(extra) + (random ? " random" : " zero") + " bytes";
                     const Bytes b = drm_test::withPayload(s.bytes, section, p);
-                    if (section == kHeader) v.refused(b, label, "corrupt");
+                    if (section == kHeader) v.refused(b, label, drm::ErrorKind::Corrupt);
                     else v.refusedOrSound(b, label);
                 }
             }
@@ -173,7 +173,7 @@ TEST(ChecksummedCorruption, UnknownHeaderFlagsAreRefused) {
     Verdicts v("unknown header flags");
     for (int bit = 7; bit < 16; ++bit)
         forEachHeader([&](const drm_test::Sample&, HeaderFields& h) { h.flags |= uint16_t(1u << bit); },
-                      [&](const Bytes& b, const std::string& label) { v.refused(b, label, "corrupt"); },
+                      [&](const Bytes& b, const std::string& label) { v.refused(b, label, drm::ErrorKind::Corrupt); },
                       "flag bit " + std::to_string(bit) + " set");
 }
 
@@ -217,7 +217,7 @@ TEST(ChecksummedCorruption, FaceCountsThatDoNotMatchAreRefused) {
     };
     for (const auto& change : changes)
         forEachHeader([&](const drm_test::Sample&, HeaderFields& h) { h.faceCount = change.second(h.faceCount); },
-                      [&](const Bytes& b, const std::string& label) { v.refused(b, label, "corrupt"); },
+                      [&](const Bytes& b, const std::string& label) { v.refused(b, label, drm::ErrorKind::Corrupt); },
                       std::string("face count ") + change.first);
 }
 
@@ -235,7 +235,7 @@ TEST(ChecksummedCorruption, ComponentCountsThatDoNotMatchAreRefused) {
             --h.componentCount;
             h.startVertices.resize(h.startVertices.size() - 3);
         },
-        [&](const Bytes& b, const std::string& label) { v.refused(b, label, "corrupt"); }, "last component dropped");
+        [&](const Bytes& b, const std::string& label) { v.refused(b, label, drm::ErrorKind::Corrupt); }, "last component dropped");
 }
 
 TEST(ChecksummedCorruption, ImpossibleStartTrianglesAreRefused) {
@@ -263,7 +263,7 @@ TEST(ChecksummedCorruption, ImpossibleStartTrianglesAreRefused) {
     };
     for (const Change& c : changes)
         forEachHeader([&](const drm_test::Sample&, HeaderFields& h) { c.apply(h); },
-                      [&](const Bytes& b, const std::string& label) { v.refused(b, label, "corrupt"); }, c.what);
+                      [&](const Bytes& b, const std::string& label) { v.refused(b, label, drm::ErrorKind::Corrupt); }, c.what);
 }
 
 TEST(ChecksummedCorruption, ReorderedStartTrianglesAreRefusedOrSound) {
@@ -290,34 +290,34 @@ TEST(ChecksummedCorruption, OutOfRangeHeaderFieldsAreRefused) {
     Verdicts v("header fields out of range");
     struct Change {
         const char* what;
-        const char* prefix;
+        drm::ErrorKind kind;
         std::function<void(HeaderFields&)> apply;
     };
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     const Change changes[] = {
-        {"0 quantization bits", "corrupt", [](HeaderFields& h) { h.bits = 0; }},
-        {"22 quantization bits", "corrupt", [](HeaderFields& h) { h.bits = 22; }},
-        {"255 quantization bits", "corrupt", [](HeaderFields& h) { h.bits = 255; }},
-        {"predictor 0 (auto is never stored)", "corrupt", [](HeaderFields& h) { h.predictor = 0; }},
-        {"predictor 3", "corrupt", [](HeaderFields& h) { h.predictor = 3; }},
-        {"predictor 255", "corrupt", [](HeaderFields& h) { h.predictor = 255; }},
-        {"connectivity coder 0", "unsupported", [](HeaderFields& h) { h.connectivityCoder = 0; }},
-        {"connectivity coder 2", "unsupported", [](HeaderFields& h) { h.connectivityCoder = 2; }},
-        {"geometry coder 0", "unsupported", [](HeaderFields& h) { h.geometryCoder = 0; }},
-        {"geometry coder 4", "unsupported", [](HeaderFields& h) { h.geometryCoder = 4; }},
-        {"geometry coder 255", "unsupported", [](HeaderFields& h) { h.geometryCoder = 255; }},
-        {"origin x NaN", "corrupt", [=](HeaderFields& h) { h.origin[0] = nan; }},
-        {"origin y +inf", "corrupt", [=](HeaderFields& h) { h.origin[1] = inf; }},
-        {"origin z -inf", "corrupt", [=](HeaderFields& h) { h.origin[2] = -inf; }},
-        {"step 0", "corrupt", [](HeaderFields& h) { h.step = 0; }},
-        {"step -0", "corrupt", [](HeaderFields& h) { h.step = -0.0; }},
-        {"step -1", "corrupt", [](HeaderFields& h) { h.step = -1; }},
-        {"step NaN", "corrupt", [=](HeaderFields& h) { h.step = nan; }},
-        {"step +inf", "corrupt", [=](HeaderFields& h) { h.step = inf; }},
+        {"0 quantization bits", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.bits = 0; }},
+        {"22 quantization bits", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.bits = 22; }},
+        {"255 quantization bits", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.bits = 255; }},
+        {"predictor 0 (auto is never stored)", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.predictor = 0; }},
+        {"predictor 3", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.predictor = 3; }},
+        {"predictor 255", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.predictor = 255; }},
+        {"connectivity coder 0", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.connectivityCoder = 0; }},
+        {"connectivity coder 2", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.connectivityCoder = 2; }},
+        {"geometry coder 0", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.geometryCoder = 0; }},
+        {"geometry coder 4", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.geometryCoder = 4; }},
+        {"geometry coder 255", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.geometryCoder = 255; }},
+        {"origin x NaN", drm::ErrorKind::Corrupt, [=](HeaderFields& h) { h.origin[0] = nan; }},
+        {"origin y +inf", drm::ErrorKind::Corrupt, [=](HeaderFields& h) { h.origin[1] = inf; }},
+        {"origin z -inf", drm::ErrorKind::Corrupt, [=](HeaderFields& h) { h.origin[2] = -inf; }},
+        {"step 0", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.step = 0; }},
+        {"step -0", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.step = -0.0; }},
+        {"step -1", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.step = -1; }},
+        {"step NaN", drm::ErrorKind::Corrupt, [=](HeaderFields& h) { h.step = nan; }},
+        {"step +inf", drm::ErrorKind::Corrupt, [=](HeaderFields& h) { h.step = inf; }},
     };
     for (const Change& c : changes)
         forEachHeader([&](const drm_test::Sample&, HeaderFields& h) { c.apply(h); },
-                      [&](const Bytes& b, const std::string& label) { v.refused(b, label, c.prefix); }, c.what);
+                      [&](const Bytes& b, const std::string& label) { v.refused(b, label, c.kind); }, c.what);
 }
 
 TEST(ChecksummedCorruption, OtherValidHeaderValuesAreRefusedOrSound) {
@@ -356,7 +356,7 @@ TEST(ChecksummedCorruption, RawGeometryOfTheWrongSizeIsRefused) {
             p.resize(size_t(long(p.size()) + delta), uint8_t(rng()));
             v.refused(drm_test::withPayload(s.bytes, kGeometry, p),
                       s.name + " raw geometry " + (delta > 0 ? "+" : "") + std::to_string(delta) + " bytes",
-                      "corrupt");
+                      drm::ErrorKind::Corrupt);
         }
     }
 }

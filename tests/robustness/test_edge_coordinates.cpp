@@ -84,6 +84,8 @@ TEST(EdgeCoordinates, RefusedWithAMessageOrDecodedExactly) {
                 encoded = drm::encode(edge.mesh, set.options);
             } catch (const drm::Error& e) {
                 ASSERT_NE(edge.refusal, nullptr) << "refused: " << e.what();
+                EXPECT_EQ(e.kind(), drm::ErrorKind::InvalidInput) << e.what();
+                // The refusal's text says why (e.g. past float's range), for the user: checked too.
                 EXPECT_NE(std::string(e.what()).find(edge.refusal), std::string::npos) << e.what();
                 ++refusals;
                 continue;

@@ -32,6 +32,8 @@ Outcome decodeGuarded(const Bytes& input, const std::string& label) {
         o.meshProblem = decodedMeshProblem(decoded);
     } catch (const drm::Error& e) {
         o.threw = true;
+        o.kind = e.kind();
+        o.decodeRefusal = isDecodeRefusal(e);
         o.message = e.what();
     } catch (const std::exception& e) {
         // drm.h allows only drm::Error: std::bad_alloc from a size taken
@@ -53,24 +55,32 @@ void Verdicts::fail(const std::string& label, const std::string& problem) {
     if (++failures_ <= kFailuresShown) ADD_FAILURE() << what_ << ": " << label << ": " << problem;
 }
 
-bool Verdicts::judgeError(const Outcome& o, const std::string& label, const char* expectedPrefix) {
+bool Verdicts::judgeError(const Outcome& o, const std::string& label, const drm::ErrorKind* expected) {
     if (!o.foreign.empty()) {
         fail(label, "decode threw an exception other than drm::Error: " + o.foreign);
         return false;
     }
     if (!o.threw) return true;
     ++refusedCount_;
-    if (!hasKnownErrorPrefix(o.message))
-        fail(label, "the error message \"" + o.message + "\" does not say what kind of failure it is");
-    else if (expectedPrefix && o.message.compare(0, std::string(expectedPrefix).size(), expectedPrefix) != 0)
-        fail(label, "the error message \"" + o.message + "\" does not start with \"" + expectedPrefix + "\"");
+    if (!o.decodeRefusal)
+        fail(label, std::string("decode threw an error of kind ") + drm::errorKindName(o.kind) + ": \"" + o.message +
+                        "\"");
+    else if (expected && o.kind != *expected)
+        fail(label, std::string("decode threw an error of kind ") + drm::errorKindName(o.kind) + ", not " +
+                        drm::errorKindName(*expected) + ": \"" + o.message + "\"");
     return true;
 }
 
-void Verdicts::refused(const Bytes& input, const std::string& label, const char* expectedPrefix) {
+void Verdicts::refused(const Bytes& input, const std::string& label) { refusedAs(input, label, nullptr); }
+
+void Verdicts::refused(const Bytes& input, const std::string& label, drm::ErrorKind expected) {
+    refusedAs(input, label, &expected);
+}
+
+void Verdicts::refusedAs(const Bytes& input, const std::string& label, const drm::ErrorKind* expected) {
     ++inputs_;
     const Outcome o = decodeGuarded(input, label);
-    if (!judgeError(o, label, expectedPrefix) || o.threw) return;
+    if (!judgeError(o, label, expected) || o.threw) return;
     ++decodedCount_;
     fail(label, "decode returned instead of throwing drm::Error" +
                     (o.meshProblem.empty() ? std::string() : " (and the mesh is malformed: " + o.meshProblem + ")"));

@@ -10,15 +10,20 @@
 #include <utility>
 #include <vector>
 
+#include "drm/drm.h"
+
 namespace drm_test {
 
 using Bytes = std::vector<uint8_t>;
 
 // What one decode did. Exactly one of these holds: it threw drm::Error
-// (message), threw something else (foreign), or returned (meshProblem is
-// "" for a well-formed mesh).
+// (kind, message, and whether that kind is one decode may throw), threw
+// something else (foreign), or returned (meshProblem is "" for a
+// well-formed mesh).
 struct Outcome {
     bool threw = false;
+    drm::ErrorKind kind = drm::ErrorKind::Internal;
+    bool decodeRefusal = false;
     std::string message;
     std::string foreign;
     std::string meshProblem;
@@ -35,9 +40,10 @@ public:
     Verdicts(const Verdicts&) = delete;
     Verdicts& operator=(const Verdicts&) = delete;
 
-    // decode must throw drm::Error with a known kind of message (and, if
-    // given, one that starts with expectedPrefix).
-    void refused(const Bytes& input, const std::string& label, const char* expectedPrefix = nullptr);
+    // decode must throw drm::Error of a kind a decoder may throw (Corrupt,
+    // Unsupported), and, if given, of the expected kind.
+    void refused(const Bytes& input, const std::string& label);
+    void refused(const Bytes& input, const std::string& label, drm::ErrorKind expected);
     // decode may also return, provided the mesh is well formed: for damage
     // that no check can see, such as a changed coordinate.
     void refusedOrSound(const Bytes& input, const std::string& label);
@@ -45,7 +51,8 @@ public:
     size_t failures() const { return failures_; }
 
 private:
-    bool judgeError(const Outcome& o, const std::string& label, const char* expectedPrefix);
+    void refusedAs(const Bytes& input, const std::string& label, const drm::ErrorKind* expected);
+    bool judgeError(const Outcome& o, const std::string& label, const drm::ErrorKind* expected);
     void fail(const std::string& label, const std::string& problem);
 
     std::string what_;

@@ -15,12 +15,16 @@
 
 namespace {
 
-// The message of the drm::Error thrown by f, or "" if it throws none.
+// The message of the drm::Error thrown by f, or "" if it throws none; every
+// error a reader throws on bad bytes is of kind Corrupt. The tests below
+// compare whole messages where the text is the behaviour under test: a
+// ByteReader's refusals name the section, the field and the file offset.
 template <class F>
 std::string errorOf(F f) {
     try {
         f();
     } catch (const drm::Error& e) {
+        EXPECT_EQ(e.kind(), drm::ErrorKind::Corrupt) << e.what();
         return e.what();
     }
     return "";
@@ -150,9 +154,9 @@ TEST(ByteReader, MalformedVarintsAreCorrupt) {
     };
     for (const std::vector<uint8_t>& b : bad) {
         drm::ByteReader r(b.data(), b.size(), "header", 10);
-        const std::string message = errorOf([&] { r.varint("size"); });
-        EXPECT_EQ(message.rfind("corrupt file: header field \"size\" ", 0), 0u) << message;
-        EXPECT_NE(message.find(" at offset 10"), std::string::npos) << message;
+        const std::string message = errorOf([&] { r.varint("size"); });  // Corrupt
+        EXPECT_NE(message.find("header field \"size\" "), std::string::npos) << message;  // names the field
+        EXPECT_NE(message.find(" at offset 10"), std::string::npos) << message;          // and where
     }
 }
 
@@ -176,10 +180,8 @@ TEST(ByteReader, GarbageNeverReadsOutOfBounds) {
                 ASSERT_LE(r.offset(), data.size());
             }
         } catch (const drm::Error& e) {
-            const std::string message = e.what();
-            EXPECT_TRUE(message.rfind("truncated file: garbage field \"x\"", 0) == 0 ||
-                        message.rfind("corrupt file: garbage field \"x\"", 0) == 0)
-                << message;
+            EXPECT_EQ(e.kind(), drm::ErrorKind::Corrupt) << e.what();
+            EXPECT_NE(std::string(e.what()).find("garbage field \"x\""), std::string::npos) << e.what();  // names the field
         }
     }
 }

@@ -163,10 +163,13 @@ TEST(Traversal, RejectsAReusedDirectedEdge) {
 }
 
 TEST(MeshCheck, RefusesOnlyWhatNoFileCanHold) {
+    // A refusal is InvalidInput, and its message names the element at
+    // fault (drm.h's promise): the text is checked for that.
     auto message = [](const Mesh& m) {
         try {
             encode(m);
         } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::InvalidInput) << e.what();
             return std::string(e.what());
         }
         return std::string("accepted");

@@ -53,6 +53,18 @@ private:
 constexpr int kMinQuantizationBits = 1;      // EncodeOptions::bits
 constexpr int kMaxQuantizationBits = 21;     // keeps squared fixed-point distances within int64
 constexpr int kDefaultQuantizationBits = 12; // the paper's setting
+// EncodeOptions::refineBits: a file holds 1..kMaxRefineBits low bits (always
+// fewer than the quantization bits); 0 lets the encoder try
+// 1..kMaxTriedRefineBits and the spanning tree alone.
+constexpr int kMaxRefineBits = 8;
+constexpr int kMaxTriedRefineBits = 5;
+// EncodeOptions::normalBits and uvBits.
+constexpr int kMinNormalBits = 4;
+constexpr int kMaxNormalBits = 16;
+constexpr int kDefaultNormalBits = 10;   // every normal within 0.2 degrees
+constexpr int kMinUvBits = 1;
+constexpr int kMaxUvBits = 24;
+constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
 constexpr int kFileFormatVersion = 1;
@@ -212,8 +224,8 @@ struct EncodeOptions {
     bool curvature = false;                 // the paper's curvature correction
     GeometryCoder geometry = GeometryCoder::SpanningTree;
     // With GeometryCoder::Refine: how many low bits the refinement codes
-    // (1..8, below `bits`); 0 lets the encoder try 1, 2, ... while the file
-    // shrinks, and the spanning tree alone, and keep the smallest.
+    // (1..kMaxRefineBits, below `bits`); 0 lets the encoder try
+    // 1..kMaxTriedRefineBits and the spanning tree alone, and keep the smallest.
     int refineBits = 0;
     // Store the permutation back to the input vertex order (a fourth
     // section), so decoded vertices keep their input indices.
@@ -223,11 +235,11 @@ struct EncodeOptions {
     // not kept are simply left out.
     uint32_t attributes = kAttrAll;
     // Normals: octahedral quantization with this many bits per coordinate
-    // (4..16). 10 keeps every normal within 0.2 degrees.
-    int normalBits = 10;
+    // (kMinNormalBits..kMaxNormalBits). 10 keeps every normal within 0.2 degrees.
+    int normalBits = kDefaultNormalBits;
     // Texture coordinates: a square grid over their range with 2^uvBits - 1
-    // steps across the wider axis (1..24).
-    int uvBits = 12;
+    // steps across the wider axis (kMinUvBits..kMaxUvBits).
+    int uvBits = kDefaultUvBits;
     // Meshes exported with a vertex per corner (every face on its own
     // vertices, positions repeated): Weld::Auto merges vertices on the same
     // grid point for the connectivity when at least a third of the vertices

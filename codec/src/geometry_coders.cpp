@@ -1,0 +1,84 @@
+#include "geometry_coders.h"
+
+#include "geometry_raw.h"
+
+namespace drm {
+namespace {
+
+// Raw: every coordinate in `bits` bits; the decoded order is the input's.
+GeometryEncoding encodeRaw(const std::vector<int32_t>& grid, int bits, NeighbourIndex) {
+    GeometryEncoding out;
+    out.bytes = packGrid(grid, bits);
+    out.order.resize(grid.size() / 3);
+    for (size_t v = 0; v < out.order.size(); ++v) out.order[v] = uint32_t(v);
+    return out;
+}
+VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
+    VertexSet out;
+    out.grid = unpackGrid(data, size, vertexCount, bits);
+    return out;
+}
+
+// SpanningTree: one pass (geometry_tree.h).
+VertexSet decodeTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
+    VertexSet out;
+    out.grid = decodeGeometryTree(data, size, vertexCount, bits);
+    return out;
+}
+
+// Refine: the coarse grid by the spanning tree inside the refine payload,
+// the low bits after the connectivity (geometry_refine.h).
+VertexSet decodeRefineCoarse(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
+    VertexSet out;
+    out.refinement = readRefinePayload(data, size, bits);
+    out.lowBits = out.refinement.lowBits;
+    out.grid = decodeGeometryTree(out.refinement.tree, out.refinement.treeSize, vertexCount, bits - out.lowBits);
+    return out;
+}
+int refineBitsOfRefine(const uint8_t* data, size_t size, int bits) {
+    return readRefinePayload(data, size, bits).lowBits;
+}
+std::vector<uint8_t> encodeRefineLowBits(const std::vector<uint8_t>& tree, const std::vector<int32_t>& fine,
+                                         int lowBits, const std::vector<uint32_t>& triangles) {
+    return writeRefinePayload(lowBits, encodeRefinement(fine, lowBits, triangles), tree);
+}
+std::vector<int32_t> decodeRefineLowBits(const VertexSet& vertices, const std::vector<int32_t>& coarse,
+                                         const std::vector<uint32_t>& triangles) {
+    return decodeRefinement(vertices.refinement, coarse, triangles);
+}
+
+int noRefineBits(const uint8_t*, size_t, int) { return 0; }
+
+// Indexed by id - 1 (the ids are 1, 2, 3).
+const GeometryCoderEntry kCoders[] = {
+    {GeometryCoder::Raw, "raw", encodeRaw, nullptr, decodeRaw, noRefineBits, nullptr, nullptr},
+    {GeometryCoder::SpanningTree, "tree", encodeGeometryTree, &kCoders[0], decodeTree, noRefineBits, nullptr, nullptr},
+    // Refine's own fallback, the spanning tree alone, is one of the low-bit
+    // counts the encoder tries (encodeConnectivity), not a section swap.
+    {GeometryCoder::Refine, "refine", encodeGeometryTree, nullptr, decodeRefineCoarse, refineBitsOfRefine,
+     encodeRefineLowBits, decodeRefineLowBits},
+};
+constexpr size_t kCoderCount = sizeof kCoders / sizeof kCoders[0];
+
+}  // namespace
+
+const GeometryCoderEntry* geometryCoderById(uint8_t id) {
+    if (id < 1 || id > kCoderCount) return nullptr;
+    const GeometryCoderEntry* entry = &kCoders[id - 1];
+    return uint8_t(entry->id) == id ? entry : nullptr;
+}
+
+const GeometryCoderEntry* geometryCoderByName(const std::string& name) {
+    for (const GeometryCoderEntry& entry : kCoders)
+        if (name == entry.name) return &entry;
+    return nullptr;
+}
+
+const std::vector<const GeometryCoderEntry*>& geometryCoders() {
+    static const std::vector<const GeometryCoderEntry*> listed = {
+        geometryCoderOf(GeometryCoder::SpanningTree), geometryCoderOf(GeometryCoder::Refine),
+        geometryCoderOf(GeometryCoder::Raw)};
+    return listed;
+}
+
+}  // namespace drm
