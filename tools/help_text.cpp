@@ -26,7 +26,7 @@ std::vector<std::pair<std::string, std::string>> placeholders() {
     for (drm::Predictor p : {drm::Predictor::Auto, drm::Predictor::Parallelogram, drm::Predictor::Midpoint})
         predictors.push_back(drm::predictorName(p));
     std::vector<std::string> coders;
-    for (drm::GeometryCoder g : {drm::GeometryCoder::SpanningTree, drm::GeometryCoder::Refine, drm::GeometryCoder::Raw})
+    for (drm::GeometryCoder g : {drm::GeometryCoder::Auto, drm::GeometryCoder::SpanningTree, drm::GeometryCoder::Refine, drm::GeometryCoder::Raw})
         coders.push_back(drm::geometryCoderName(g));
     const drm::EncodeOptions defaults;
     return {

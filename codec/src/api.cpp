@@ -52,16 +52,19 @@ Predictor parsePredictor(const std::string& name) {
     throw Error(ErrorKind::InvalidInput, "unknown predictor '" + name + "' (use auto, parallelogram or midpoint)");
 }
 
+// Auto is an option, not a coder: the table holds what a file can store.
 const char* geometryCoderName(GeometryCoder g) {
+    if (g == GeometryCoder::Auto) return "auto";
     const GeometryCoderEntry* entry = geometryCoderOf(g);
     return entry ? entry->name : "unknown";
 }
 
 GeometryCoder parseGeometryCoder(const std::string& name) {
+    if (name == geometryCoderName(GeometryCoder::Auto)) return GeometryCoder::Auto;
     if (const GeometryCoderEntry* entry = geometryCoderByName(name)) return entry->id;
-    // "tree, refine or raw": the table's names, in its listing order.
+    // "auto, tree, refine or raw": auto, then the table's names in its listing order.
     const std::vector<const GeometryCoderEntry*>& coders = geometryCoders();
-    std::string names;
+    std::string names = std::string(geometryCoderName(GeometryCoder::Auto)) + ", ";
     for (size_t i = 0; i < coders.size(); ++i)
         names += std::string(i == 0 ? "" : (i + 1 == coders.size() ? " or " : ", ")) + coders[i]->name;
     throw Error(ErrorKind::InvalidInput, "unknown geometry coder '" + name + "' (use " + names + ")");

@@ -19,7 +19,10 @@ VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int 
     return out;
 }
 
-// SpanningTree: one pass (geometry_tree.h).
+// SpanningTree: one pass (geometry_tree.h), the smaller of its two trees.
+GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index) {
+    return encodeGeometryTree(grid, bits, index);
+}
 VertexSet decodeTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
     VertexSet out;
     out.grid = decodeGeometryTree(data, size, vertexCount, bits);
@@ -52,10 +55,10 @@ int noRefineBits(const uint8_t*, size_t, int) { return 0; }
 // Indexed by id - 1 (the ids are 1, 2, 3).
 const GeometryCoderEntry kCoders[] = {
     {GeometryCoder::Raw, "raw", encodeRaw, nullptr, decodeRaw, noRefineBits, nullptr, nullptr},
-    {GeometryCoder::SpanningTree, "tree", encodeGeometryTree, &kCoders[0], decodeTree, noRefineBits, nullptr, nullptr},
+    {GeometryCoder::SpanningTree, "tree", encodeTree, &kCoders[0], decodeTree, noRefineBits, nullptr, nullptr},
     // Refine's own fallback, the spanning tree alone, is one of the low-bit
     // counts the encoder tries (encodeConnectivity), not a section swap.
-    {GeometryCoder::Refine, "refine", encodeGeometryTree, nullptr, decodeRefineCoarse, refineBitsOfRefine,
+    {GeometryCoder::Refine, "refine", encodeTree, nullptr, decodeRefineCoarse, refineBitsOfRefine,
      encodeRefineLowBits, decodeRefineLowBits},
 };
 constexpr size_t kCoderCount = sizeof kCoders / sizeof kCoders[0];

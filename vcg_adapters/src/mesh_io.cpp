@@ -279,11 +279,14 @@ LoadedMesh loadMesh(const std::string& path) {
         return loaded;
     } catch (const std::bad_alloc&) {
         throw Error(ErrorKind::InvalidInput, prefix + "out of memory (is the header's element count right?)");
-    } catch (const std::exception& e) {
-        const std::string reason = e.what();
+    } catch (const Error& e) {
+        // Our own errors keep their kind (a read that fails stays Io);
         // readFileBytes already names the file.
-        if (reason.compare(0, 12, "cannot read ") == 0) throw Error(ErrorKind::InvalidInput, reason);
-        throw Error(ErrorKind::InvalidInput, prefix + reason);
+        const std::string reason = e.what();
+        if (reason.compare(0, prefix.size(), prefix) == 0) throw;
+        throw Error(e.kind(), prefix + reason);
+    } catch (const std::exception& e) {
+        throw Error(ErrorKind::InvalidInput, prefix + e.what());
     }
 }
 

@@ -156,6 +156,9 @@ enum class Predictor : uint8_t {
 
 // How the vertex set is coded (the geometry section).
 enum class GeometryCoder : uint8_t {
+    Auto = 0,          // an option only, never stored: the tree, and on meshes where
+                       // the tree spends many bits per vertex also refine (the
+                       // smallest file wins)
     Raw = 1,           // every grid coordinate in `bits` bits; keeps the input order
     SpanningTree = 2,  // predictive coding along a nearest-neighbour spanning tree
                        // (the encoder falls back to raw where that is smaller)
@@ -166,7 +169,7 @@ enum class GeometryCoder : uint8_t {
 };
 
 const char* geometryCoderName(GeometryCoder g);
-// Parses "raw", "tree", "refine"; throws Error otherwise.
+// Parses "auto", "raw", "tree", "refine"; throws Error otherwise.
 GeometryCoder parseGeometryCoder(const std::string& name);
 
 const char* predictorName(Predictor p);
@@ -222,7 +225,7 @@ struct EncodeOptions {
     int bits = kDefaultQuantizationBits;    // quantization bits per axis, kMin..kMaxQuantizationBits
     Predictor predictor = Predictor::Auto;
     bool curvature = false;                 // the paper's curvature correction
-    GeometryCoder geometry = GeometryCoder::SpanningTree;
+    GeometryCoder geometry = GeometryCoder::Auto;
     // With GeometryCoder::Refine: how many low bits the refinement codes
     // (1..kMaxRefineBits, below `bits`); 0 lets the encoder try
     // 1..kMaxTriedRefineBits and the spanning tree alone, and keep the smallest.
