@@ -268,13 +268,16 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
 }
 
 // GeometryCoder::Auto: the tree, and where it spends more than
-// kRefineWorthTryingBits per vertex also refine with a few low bits, the
-// smallest file kept. Measured on the corpus at 12 bits: refine never wins
+// kRefineWorthTryingBits per vertex also refine with a few low bits; refine
+// is kept where its file is at least kRefineMinimumGain smaller, since it
+// decodes 20-30 % slower (a second pass over the triangles, ranks on a
+// coarser grid). Measured on the corpus at 12 bits: refine never wins
 // where the tree is cheap (scans sampled finer than the grid: bunny, igea,
-// fandisk grow by 5-60 %), and where it wins, 4 low bits is nearly always
-// best (armadillo -14 %, dinosaur -12 %, horse-lres -7 %) and 2 the rest
-// (genus3 -11 %); trying 1..5 finds little more for three times the work.
+// fandisk grow by 5-60 %); where it wins, 4 low bits is nearly always best
+// (armadillo -14 %, dinosaur -12 %, horse-lres -7 %) and 2 the rest (genus3
+// -11 %); trying 1..5 finds little more for three times the work.
 constexpr double kRefineWorthTryingBits = 12.0;
+constexpr double kRefineMinimumGain = 0.03;
 constexpr int kAutoRefineBits[] = {4, 2};
 
 Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
@@ -284,12 +287,14 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
     const double treeBits = 8.0 * double(best.geometry.size()) / double(std::max<size_t>(1, mesh.vertexCount()));
     if (treeBits <= kRefineWorthTryingBits) return best;
+    const double worthIt = (1.0 - kRefineMinimumGain) * double(best.encoded.bytes.size());
     EncodeOptions refine = options;
     refine.geometry = GeometryCoder::Refine;
     for (int lowBits : kAutoRefineBits) {
         if (lowBits >= options.bits) continue;
         Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, lowBits, progress);
-        if (refined.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(refined);
+        if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
+            best = std::move(refined);
     }
     return best;
 }
