@@ -280,6 +280,25 @@ constexpr double kRefineWorthTryingBits = 12.0;
 constexpr double kRefineMinimumGain = 0.03;
 constexpr int kAutoRefineBits[] = {4, 2};
 
+// Refine's vertex bits without the traversal: the tree over the coarse
+// grid, and the low bits predicted across the input's triangles (the
+// traversal rebuilds them in another order, which changes the refinement's
+// size little). Decides whether a whole refine attempt is worth making.
+size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::vector<uint32_t>& triangles, int bits,
+                              int lowBits, NeighbourIndex index) {
+    const GeometryEncoding tree =
+        encodeGeometryTree(coarsenGrid(quantized, lowBits), bits - lowBits, index, GeometryTree::CheapestFirst);
+    std::vector<uint32_t> decodedIndex(tree.order.size());
+    std::vector<int32_t> fine(quantized.size());
+    for (size_t d = 0; d < tree.order.size(); ++d) {
+        decodedIndex[tree.order[d]] = uint32_t(d);
+        for (int k = 0; k < 3; ++k) fine[3 * d + k] = quantized[3 * size_t(tree.order[d]) + k];
+    }
+    std::vector<uint32_t> renumbered(triangles.size());
+    for (size_t c = 0; c < triangles.size(); ++c) renumbered[c] = decodedIndex[triangles[c]];
+    return tree.bytes.size() + encodeRefinement(fine, lowBits, renumbered).bytes.size();
+}
+
 Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
                                  const EncodeOptions& options, ProgressReporter& progress) {
     EncodeOptions tree = options;
@@ -287,11 +306,18 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
     const double treeBits = 8.0 * double(best.geometry.size()) / double(std::max<size_t>(1, mesh.vertexCount()));
     if (treeBits <= kRefineWorthTryingBits) return best;
-    const double worthIt = (1.0 - kRefineMinimumGain) * double(best.encoded.bytes.size());
+    const size_t treeGeometry = best.geometry.size(), treeTotal = best.encoded.bytes.size();
+    const double worthIt = (1.0 - kRefineMinimumGain) * double(treeTotal);
     EncodeOptions refine = options;
     refine.geometry = GeometryCoder::Refine;
     for (int lowBits : kAutoRefineBits) {
         if (lowBits >= options.bits) continue;
+        // The connectivity only grows on a coarser grid (more near ties),
+        // so refine can win only where its vertex bits alone save the gain
+        // asked of it: the estimate spares the whole attempt elsewhere
+        // (venus, casting, anchor).
+        const size_t estimate = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, lowBits, options.index);
+        if (double(treeGeometry) - double(estimate) < kRefineMinimumGain * double(treeTotal)) continue;
         Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, lowBits, progress);
         if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
             best = std::move(refined);
