@@ -25,9 +25,11 @@ std::vector<std::pair<std::string, std::string>> placeholders() {
     std::vector<std::string> predictors;
     for (drm::Predictor p : {drm::Predictor::Auto, drm::Predictor::Parallelogram, drm::Predictor::Midpoint})
         predictors.push_back(drm::predictorName(p));
-    std::vector<std::string> coders;
-    for (drm::GeometryCoder g : {drm::GeometryCoder::Auto, drm::GeometryCoder::SpanningTree, drm::GeometryCoder::Refine, drm::GeometryCoder::Raw})
+    std::vector<std::string> coders = {drm::geometryCoderName(drm::GeometryCoder::Auto)};  // an option, not a stored coder
+    for (drm::GeometryCoder g : {drm::GeometryCoder::SpanningTree, drm::GeometryCoder::Refine, drm::GeometryCoder::Raw})
         coders.push_back(drm::geometryCoderName(g));
+    std::vector<std::string> autoLowBits;
+    for (int k : drm::kAutoRefineLowBits) autoLowBits.push_back(std::to_string(k));
     const drm::EncodeOptions defaults;
     return {
         {"{bits}", range(drm::kMinQuantizationBits, drm::kMaxQuantizationBits)},
@@ -43,6 +45,9 @@ std::vector<std::pair<std::string, std::string>> placeholders() {
         {"{default-predictor}", drm::predictorName(defaults.predictor)},
         {"{geometry-coders}", listed(coders, " or ")},
         {"{default-geometry}", drm::geometryCoderName(defaults.geometry)},
+        {"{auto-refine-above}", std::to_string(int(drm::kAutoRefineAboveBitsPerVertex))},
+        {"{auto-refine-low-bits}", listed(autoLowBits, " and ")},
+        {"{auto-refine-gain}", std::to_string(drm::kAutoRefineMinimumGainPercent)},
     };
 }
 

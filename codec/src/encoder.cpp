@@ -268,17 +268,16 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
 }
 
 // GeometryCoder::Auto: the tree, and where it spends more than
-// kRefineWorthTryingBits per vertex also refine with a few low bits; refine
-// is kept where its file is at least kRefineMinimumGain smaller, since it
-// decodes 20-30 % slower (a second pass over the triangles, ranks on a
-// coarser grid). Measured on the corpus at 12 bits: refine never wins
-// where the tree is cheap (scans sampled finer than the grid: bunny, igea,
-// fandisk grow by 5-60 %); where it wins, 4 low bits is nearly always best
-// (armadillo -14 %, dinosaur -12 %, horse-lres -7 %) and 2 the rest (genus3
-// -11 %); trying 1..5 finds little more for three times the work.
-constexpr double kRefineWorthTryingBits = 12.0;
-constexpr double kRefineMinimumGain = 0.03;
-constexpr int kAutoRefineBits[] = {4, 2};
+// kAutoRefineAboveBitsPerVertex also refine with kAutoRefineLowBits (drm.h);
+// refine is kept where its file is at least kAutoRefineMinimumGainPercent
+// smaller, since it decodes 20-30 % slower (a second pass over the
+// triangles, ranks on a coarser grid). Measured on the corpus at 12 bits:
+// refine never wins where the tree is cheap (scans sampled finer than the
+// grid: bunny, igea, fandisk grow by 5-60 %); where it wins, 4 low bits is
+// nearly always best (armadillo -14 %, dinosaur -12 %, horse-lres -7 %) and
+// 2 the rest (genus3 -11 %); trying 1..5 finds little more for three times
+// the work.
+constexpr double kRefineMinimumGain = kAutoRefineMinimumGainPercent / 100.0;
 
 // Refine's vertex bits without the traversal: the tree over the coarse
 // grid, and the low bits predicted across the input's triangles (the
@@ -305,12 +304,12 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     tree.geometry = GeometryCoder::SpanningTree;
     Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
     const double treeBits = 8.0 * double(best.geometry.size()) / double(std::max<size_t>(1, mesh.vertexCount()));
-    if (treeBits <= kRefineWorthTryingBits) return best;
+    if (treeBits <= kAutoRefineAboveBitsPerVertex) return best;
     const size_t treeGeometry = best.geometry.size(), treeTotal = best.encoded.bytes.size();
     const double worthIt = (1.0 - kRefineMinimumGain) * double(treeTotal);
     EncodeOptions refine = options;
     refine.geometry = GeometryCoder::Refine;
-    for (int lowBits : kAutoRefineBits) {
+    for (int lowBits : kAutoRefineLowBits) {
         if (lowBits >= options.bits) continue;
         // The connectivity only grows on a coarser grid (more near ties),
         // so refine can win only where its vertex bits alone save the gain

@@ -127,14 +127,19 @@ void magnitudeContexts(const CodingState& s, uint32_t self, uint32_t parent, int
 }
 
 // Codes (or decodes) vertex `self`, a child of `parent`, from the
-// predictions p; `actual` is its position when encoding. Returns the
-// position.
+// predictions p; `actual` is its position when encoding. An encoder that
+// has already priced the candidates passes its pick as `chosen` (else the
+// pick is made here). Returns the position.
+constexpr uint32_t kNotChosen = kNoIndex;
 template <class Io>
-GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, const Predictions& p, GridPoint actual) {
+GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, const Predictions& p, GridPoint actual,
+                    uint32_t chosen = kNotChosen) {
     AdaptiveFrequencies& choiceModel = choiceModelOf(s);
     int contexts[3];
     magnitudeContexts(s, self, parent, contexts);
-    const uint32_t best = Io::kEncoding ? bestPrediction(Pricing(s, p, choiceModel, contexts), p, actual).candidate : 0;
+    uint32_t best = 0;
+    if (Io::kEncoding)
+        best = chosen != kNotChosen ? chosen : bestPrediction(Pricing(s, p, choiceModel, contexts), p, actual).candidate;
     const uint32_t choice = io.symbol(choiceModel, best);
     if (choice >= uint32_t(p.count)) throw Error(ErrorKind::Corrupt, "corrupt file: a geometry predictor choice is out of range");
     s.previousChoice = choice;
@@ -182,6 +187,12 @@ namespace {
 // How many nearest neighbours of each vertex the encoder's tree may take
 // as its children (joined both ways).
 constexpr int kTreeNeighbours = 4;  // 6 and 8 measured worse on most of the corpus
+// At most this many of a vertex's neighbours are looked at per step. A
+// surface vertex has about 6 to 10; only coincident points make hubs (ties
+// go to the lowest index, so m copies of a point all list the same four,
+// which then have m neighbours each, and pricing them all at every step
+// would cost m^2).
+constexpr size_t kMaxNeighboursLooked = 32;
 
 // The encoder's tree, grown depth first over the neighbour graph: the next
 // child of the vertex on top of the stack is its undecoded neighbour that
@@ -192,14 +203,16 @@ constexpr int kTreeNeighbours = 4;  // 6 and 8 measured worse on most of the cor
 // (child counts aside: they have models of their own and do not steer the
 // choice). The decoder needs none of this: it reads the tree's shape from
 // the child counts. A minimum spanning tree orders by edge length; this
-// orders by how well a vertex can be predicted (fandisk 13.26 -> ~10.3 bpv
-// in the method notes' study). Returns child lists of input vertices, in
-// coding order.
+// orders by how well a vertex can be predicted. Returns child lists of
+// input vertices, in coding order.
 std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>& grid, const NeighbourGraph& graph,
                                                      int cellBits) {
     const size_t n = grid.size() / 3;
     std::vector<std::vector<uint32_t>> children(n);
     std::vector<uint8_t> done(n, 0);
+    // Per vertex, where its undecoded neighbours begin: a vertex decoded
+    // stays decoded, so the cursor only moves on.
+    std::vector<uint32_t> cursor(graph.offset.begin(), graph.offset.end() - (n == 0 ? 0 : 1));
     CodingState s(cellBits);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
@@ -218,24 +231,26 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
         stack.push_back({root, self++});
         while (!stack.empty()) {
             const Frame top = stack.back();
-            const uint32_t* first = graph.begin(top.vertex);
-            const uint32_t* last = graph.end(top.vertex);
-            while (first != last && done[*first]) ++first;
-            if (first == last) {
+            const uint32_t* first = graph.neighbour.data() + cursor[top.vertex];
+            const uint32_t* end = graph.end(top.vertex);
+            while (first != end && done[*first]) ++first;
+            cursor[top.vertex] = uint32_t(first - graph.neighbour.data());
+            if (first == end) {
                 stack.pop_back();
                 continue;
             }
+            const uint32_t* last = first + std::min<size_t>(size_t(end - first), kMaxNeighboursLooked);
             const Predictions p = predict(s, self, top.decoded);
             int contexts[3];
             magnitudeContexts(s, self, top.decoded, contexts);
             const Pricing price(s, p, choiceModelOf(s), contexts);
-            uint32_t next = kNoVertex;
-            double nextBits = 1e300;
-            for (const uint32_t* w = first; w != last; ++w) {
+            uint32_t next = *first;  // *first is undecoded: a pick even if every price were NaN
+            Pick nextPick = bestPrediction(price, p, gridPointOf(grid, next));
+            for (const uint32_t* w = first + 1; w != last; ++w) {
                 if (done[*w]) continue;
-                const double bits = bestPrediction(price, p, gridPointOf(grid, *w)).bits;
-                if (bits < nextBits) {
-                    nextBits = bits;
+                const Pick pick = bestPrediction(price, p, gridPointOf(grid, *w));
+                if (pick.bits < nextPick.bits) {
+                    nextPick = pick;
                     next = *w;
                 }
             }
@@ -243,7 +258,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
             children[top.vertex].push_back(next);
             s.begin(top.decoded);
             const GridPoint at = gridPointOf(grid, next);
-            codeChild(io, s, self, top.decoded, p, at);
+            codeChild(io, s, self, top.decoded, p, at, nextPick.candidate);
             s.place(self, at);
             stack.push_back({next, self++});
         }

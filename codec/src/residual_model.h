@@ -47,14 +47,15 @@ int32_t codeResidual(Io& io, AxisModels& m, int context, int32_t r) {
 // The encoder's estimate of codeResidual's cost, in bits, for every bit
 // length at once: an encoder prices many residuals under the same models
 // (each candidate prediction of each possible next vertex), and the cost
-// depends on the length alone (the bits below the leading one count one
-// each).
+// depends on the length alone (an approximation: the sign and the bits
+// below the leading one count one bit each, though the sign and the first
+// two of those bits are coded adaptively).
 class ResidualCosts {
 public:
     ResidualCosts() = default;
     ResidualCosts(const AxisModels& m, int context) {
         ofLength_[0] = m.zero[context].cost(1);
-        const double nonZero = m.zero[context].cost(0) + 1.0;  // and the sign
+        const double nonZero = m.zero[context].cost(0) + 1.0;  // and the sign, as one bit
         double longer = 0;  // "longer than k" for every k below the length
         for (int n = 1; n <= kMaxLength; ++n) {
             ofLength_[n] = nonZero + (n - 1) + longer + (n < kMaxLength ? m.longer[context][n].cost(0) : 0.0);

@@ -65,13 +65,13 @@ NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count) {
             for (size_t j = 0; j < k; ++j) {
                 const uint32_t w = nearest.neighbours[v * row + j];
                 if (w == kNoVertex) break;
-                const bool alsoBack = !mutual(uint32_t(v), w);
+                const bool reverseMissing = !mutual(uint32_t(v), w);  // v is not among w's own
                 if (pass == 0) {
                     ++graph.offset[v + 1];
-                    if (alsoBack) ++graph.offset[w + 1];
+                    if (reverseMissing) ++graph.offset[w + 1];
                 } else {
                     graph.neighbour[fill[v]++] = w;
-                    if (alsoBack) graph.neighbour[fill[w]++] = uint32_t(v);
+                    if (reverseMissing) graph.neighbour[fill[w]++] = uint32_t(v);
                 }
             }
     }

@@ -58,6 +58,13 @@ constexpr int kDefaultQuantizationBits = 12; // the paper's setting
 // 1..kMaxTriedRefineBits and the spanning tree alone.
 constexpr int kMaxRefineBits = 8;
 constexpr int kMaxTriedRefineBits = 5;
+// GeometryCoder::Auto (the default): where the tree costs more than
+// kAutoRefineAboveBitsPerVertex, refine is also tried with each of
+// kAutoRefineLowBits, and kept where the file is at least
+// kAutoRefineMinimumGainPercent smaller (refine decodes 20-30 % slower).
+constexpr double kAutoRefineAboveBitsPerVertex = 12.0;
+constexpr int kAutoRefineLowBits[] = {4, 2};
+constexpr int kAutoRefineMinimumGainPercent = 3;
 // EncodeOptions::normalBits and uvBits.
 constexpr int kMinNormalBits = 4;
 constexpr int kMaxNormalBits = 16;
@@ -229,6 +236,7 @@ struct EncodeOptions {
     // With GeometryCoder::Refine: how many low bits the refinement codes
     // (1..kMaxRefineBits, below `bits`); 0 lets the encoder try
     // 1..kMaxTriedRefineBits and the spanning tree alone, and keep the smallest.
+    // Auto takes its own (kAutoRefineLowBits) and ignores this.
     int refineBits = 0;
     // Store the permutation back to the input vertex order (a fourth
     // section), so decoded vertices keep their input indices.
