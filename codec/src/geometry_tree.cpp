@@ -93,12 +93,10 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
 struct Pricing {
     ResidualCosts axis[3];
     double choice[kMaxCandidates];
-    int count;
-    Pricing(const CodingState& s, const Predictions& p, const AdaptiveFrequencies& choiceModel, const int* contexts)
-        : count(p.count) {
+    Pricing(const CodingState& s, const Predictions& p, const AdaptiveFrequencies& choiceModel, const int* contexts) {
         for (int a = 0; a < 3; ++a) axis[a] = ResidualCosts(s.axis[a], contexts[a]);
         const double total = choiceModel.totalCount();
-        for (int c = 0; c < count; ++c) choice[c] = std::log2(total / choiceModel.countOf(uint32_t(c)));
+        for (int c = 0; c < p.count; ++c) choice[c] = std::log2(total / choiceModel.countOf(uint32_t(c)));
     }
 };
 
@@ -212,7 +210,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
     std::vector<uint8_t> done(n, 0);
     // Per vertex, where its undecoded neighbours begin: a vertex decoded
     // stays decoded, so the cursor only moves on.
-    std::vector<uint32_t> cursor(graph.offset.begin(), graph.offset.end() - (n == 0 ? 0 : 1));
+    std::vector<uint32_t> cursor(graph.offset.begin(), graph.offset.end() - 1);  // offset has n + 1 entries
     CodingState s(cellBits);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
