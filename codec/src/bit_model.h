@@ -19,6 +19,9 @@ namespace drm {
 // slow one holds the long-run rate). Integer arithmetic only.
 class BitModel {
 public:
+    BitModel() = default;
+    // Starts with P(1) = ofOne65536 / 65536 (the default is 1/2).
+    explicit BitModel(uint32_t ofOne65536) : fast_(ofOne65536), slow_(ofOne65536) {}
     void encode(RangeEncoder& coder, int bit) {
         const uint32_t p1 = probabilityOfOne();
         if (bit) coder.encode(kOne - p1, p1, kOne);

@@ -27,11 +27,7 @@ constexpr uint32_t kNoVertex = kNoIndex;
 constexpr uint32_t kNotPresent = kNoIndex;
 
 // The number of bits needed to write m: 0 for 0, 1 for 1, 3 for 5.
-inline int bitLength(uint64_t m) {
-    int n = 0;
-    for (; m != 0; m >>= 1) ++n;
-    return n;
-}
+inline int bitLength(uint64_t m) { return m == 0 ? 0 : 64 - __builtin_clzll(m); }
 
 // A point of the quantization grid (or a difference of two).
 struct GridPoint {

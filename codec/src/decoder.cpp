@@ -57,7 +57,8 @@ struct Decoding {
 };
 
 void decodeVertices(Decoding& d) {
-    d.vertices = d.geometryCoder.decode(d.parts.geometry, d.parts.geometrySize, d.header.vertexCount, d.header.grid.bits);
+    d.vertices = d.geometryCoder.decode(d.parts.geometry, d.parts.geometrySize, d.header.vertexCount, d.header.grid.bits,
+                                              d.parts.formatVersion);
     d.result.quantized = std::move(d.vertices.grid);
     d.vertexCount = size_t(d.header.vertexCount);
 }

@@ -19,9 +19,19 @@ std::string versionRange() {
     return std::to_string(kOldestReadableFormatVersion) + " to " + std::to_string(kNewestReadableFormatVersion);
 }
 
+// From version 2 a section's checksum covers the format version (its two
+// bytes as stored) before the payload: a file whose version field is changed
+// to another readable version then fails its checksums instead of having
+// its sections read in another version's syntax.
+uint32_t sectionChecksum(int version, const uint8_t* payload, size_t size) {
+    if (version < 2) return crc32(payload, size);
+    const uint8_t stored[2] = {uint8_t(version & 0xFF), uint8_t(version >> 8)};
+    return crc32(payload, size, crc32(stored, 2));
+}
+
 void writeSection(ByteWriter& out, const std::vector<uint8_t>& payload) {
     out.varint(payload.size());
-    out.u32(crc32(payload.data(), payload.size()));
+    out.u32(sectionChecksum(kFormatVersion, payload.data(), payload.size()));
     out.bytes(payload);
 }
 
@@ -184,7 +194,7 @@ FileParts readFile(const uint8_t* data, size_t size) {
         const uint32_t stored = file.u32((name + " section checksum").c_str());
         const size_t offset = file.offset();
         *payload = file.bytes(*payloadSize, (name + " section").c_str());
-        if (crc32(*payload, *payloadSize) != stored)
+        if (sectionChecksum(version, *payload, *payloadSize) != stored)
             throw Error(ErrorKind::Corrupt, "corrupt file: the " + name + " section (offset " + std::to_string(offset) +
                         ") fails its checksum");
     };

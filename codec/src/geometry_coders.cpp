@@ -13,7 +13,7 @@ GeometryEncoding encodeRaw(const std::vector<int32_t>& grid, int bits, Neighbour
     for (size_t v = 0; v < out.order.size(); ++v) out.order[v] = uint32_t(v);
     return out;
 }
-VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
+VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int) {
     VertexSet out;
     out.grid = unpackGrid(data, size, vertexCount, bits);
     return out;
@@ -23,19 +23,19 @@ VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int 
 GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index) {
     return encodeGeometryTree(grid, bits, index);
 }
-VertexSet decodeTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
+VertexSet decodeTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
     VertexSet out;
-    out.grid = decodeGeometryTree(data, size, vertexCount, bits);
+    out.grid = decodeGeometryTree(data, size, vertexCount, bits, formatVersion);
     return out;
 }
 
 // Refine: the coarse grid by the spanning tree inside the refine payload,
 // the low bits after the connectivity (geometry_refine.h).
-VertexSet decodeRefineCoarse(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
+VertexSet decodeRefineCoarse(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
     VertexSet out;
     out.refinement = readRefinePayload(data, size, bits);
     out.lowBits = out.refinement.lowBits;
-    out.grid = decodeGeometryTree(out.refinement.tree, out.refinement.treeSize, vertexCount, bits - out.lowBits);
+    out.grid = decodeGeometryTree(out.refinement.tree, out.refinement.treeSize, vertexCount, bits - out.lowBits, formatVersion);
     return out;
 }
 int refineBitsOfRefine(const uint8_t* data, size_t size, int bits) {

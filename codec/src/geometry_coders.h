@@ -39,8 +39,9 @@ struct GeometryCoderEntry {
     // (scattered points predict no better than raw bits), or nullptr.
     const GeometryCoderEntry* fallback;
 
-    // Decoder, first pass; throws Error (Corrupt) on a malformed section.
-    VertexSet (*decode)(const uint8_t* data, size_t size, uint64_t vertexCount, int bits);
+    // Decoder, first pass, in the syntax of the file's format version;
+    // throws Error (Corrupt) on a malformed section.
+    VertexSet (*decode)(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion);
     // The low bits coded after the connectivity, read from the section
     // without decoding it (inspect); 0 for a coder with one pass.
     int (*refineBits)(const uint8_t* data, size_t size, int bits);

@@ -18,7 +18,7 @@
 namespace drm {
 namespace {
 
-constexpr int kChoiceContexts = 4;  // predictor choice tables: by the previous choice, clamped
+constexpr int kChoiceContexts = 4;  // format 1's predictor choice tables: by the previous choice, clamped
 constexpr uint32_t kDirectChildCounts = 8;  // 0..7, then an escape
 
 // The decoded points a prediction is built from are the kNearest decoded
@@ -28,27 +28,122 @@ constexpr uint32_t kDirectChildCounts = 8;  // 0..7, then an escape
 // ordered pairs of them (on a surface sampled by near-regular triangles the
 // next vertex around p often lies there).
 constexpr int kMaxCandidates = 2 + kNearest + kNearest * (kNearest - 1);
+constexpr int kPaddedCandidates = (kMaxCandidates + 3) / 4 * 4;
 struct Predictions {
     GridPoint candidate[kMaxCandidates];
     int count = 0;
-    void add(GridPoint c) { candidate[count++] = c; }
+    // The candidates again, one array per axis, padded with points far from
+    // every candidate: crowding is a short branch-free scan over them.
+    static constexpr int32_t kFar = -(1 << 28);
+    int32_t xs[kPaddedCandidates], ys[kPaddedCandidates], zs[kPaddedCandidates];
+    // The decoded points the candidates are built from, the parent first.
+    GridPoint known[1 + kNearest];
+    int knownCount = 0;
+    // The local spacing: the squared distance from the parent to the
+    // farthest of its near points (0 if it has none).
+    int64_t spacing2 = 0;
+    // Two candidates crowd each other when no coordinate differs by more
+    // than this: a fifth of the spacing.
+    int32_t crowdRadius = 0;
+
+    Predictions() {
+        std::fill(xs, xs + kPaddedCandidates, kFar);
+        std::fill(ys, ys + kPaddedCandidates, kFar);
+        std::fill(zs, zs + kPaddedCandidates, kFar);
+    }
+    void add(GridPoint c) {
+        xs[count] = c.x;
+        ys[count] = c.y;
+        zs[count] = c.z;
+        candidate[count++] = c;
+    }
 };
+
+// floor(sqrt(v)), exactly on every machine (the double is only a start).
+uint32_t integerSqrt(uint64_t v) {
+    uint64_t r = uint64_t(std::sqrt(double(v)));
+    while (r * r > v) --r;
+    while ((r + 1) * (r + 1) <= v) ++r;
+    return uint32_t(r);
+}
+
+// Format 2 names the predictor with a yes/no flag per candidate, in index
+// order, each in a context of what the decoder can see about it:
+// - how near it lies to a decoded point (in quarters of the spacing: a
+//   vertex is rarely right next to one already decoded, so a candidate on
+//   top of a decoded point is rarely the one);
+// - whether it was the previous vertex's choice;
+// - whether another candidate crowds it.
+// A candidate equal to an earlier one has no flag, nor has the last one
+// left (a "no" to every other names it). Against one symbol over all
+// candidates this is 2 % smaller on the corpus (docs/geometry-ablation.md).
+constexpr int kDistanceBuckets = 4;
+int distanceBucket(const Predictions& p, int c) {
+    if (p.spacing2 == 0) return kDistanceBuckets - 1;
+    int64_t nearest = INT64_MAX;
+    for (int k = c == 0 ? 1 : 0; k < p.knownCount; ++k) nearest = std::min(nearest, distance2(p.candidate[c], p.known[k]));
+    if (16 * nearest < p.spacing2) return 0;
+    if (4 * nearest < p.spacing2) return 1;
+    if (nearest < p.spacing2) return 2;
+    return 3;
+}
+int crowded(const Predictions& p, int c) {
+    const int32_t x = p.candidate[c].x, y = p.candidate[c].y, z = p.candidate[c].z, r = p.crowdRadius;
+    const uint32_t width = uint32_t(2 * r);
+    int within = 0;  // c itself and any other
+    for (int k = 0; k < kPaddedCandidates; ++k)
+        within += (uint32_t(p.xs[k] - x + r) <= width) & (uint32_t(p.ys[k] - y + r) <= width) &
+                  (uint32_t(p.zs[k] - z + r) <= width);
+    return within > 1 ? 1 : 0;
+}
+bool repeatsEarlier(const Predictions& p, int c) {
+    const GridPoint at = p.candidate[c];
+    for (int k = 0; k < c; ++k)
+        if (p.candidate[k].x == at.x && p.candidate[k].y == at.y && p.candidate[k].z == at.z) return true;
+    return false;
+}
+// The last candidate that is not a repeat: it needs no flag.
+int lastFlagged(const Predictions& p) {
+    int last = p.count - 1;
+    while (last > 0 && repeatsEarlier(p, last)) --last;
+    return last;
+}
+
+// Format 2 also codes the residual from the parent itself (the whole tree
+// edge) with models of its own, apart from the residuals from the other
+// candidates, which are small corrections; format 1 has one set.
+constexpr int kResidualGroups = 2;
+
+// Format 2 codes a child count in a context of the parent's own child
+// count (0, 1, 2 or more; roots apart); format 1 has one table.
+constexpr int kChildCountContexts = 4;
 
 // Everything both sides track while walking the tree.
 struct CodingState {
-    std::vector<GridPoint> pos;            // decoded positions
+    bool flags;                        // format 2's syntax (else format 1's)
+    std::vector<GridPoint> pos;        // decoded positions
     std::vector<uint32_t> parentOf;    // decoded parent, kNoVertex for roots
     std::vector<uint32_t> magnitude;   // |residual| per axis, 3 per vertex
+    std::vector<uint8_t> childCountOf; // decoded child-count symbols (8: escaped)
     DecodedCells cells;
-    AxisModels axis[3];
-    std::vector<AdaptiveFrequencies> predictorChoice;  // [previous choice, clamped]
-    AdaptiveFrequencies childCount;
+    AxisModels axis[kResidualGroups][3];  // [residual group][axis]
+    std::vector<AdaptiveFrequencies> predictorChoice;                // format 1: [previous choice, clamped]
+    BitModel isChoice[kMaxCandidates][kDistanceBuckets][2][2];       // format 2: [candidate][distance][was previous][crowded]
+    std::vector<AdaptiveFrequencies> childCount;                     // [context]
     uint32_t previousChoice = 0;
 
-    explicit CodingState(int cellBits)
-        : cells(cellBits),
+    CodingState(int cellBits, int formatVersion)
+        : flags(formatVersion >= 2),
+          cells(cellBits),
           predictorChoice(kChoiceContexts, AdaptiveFrequencies(std::vector<uint16_t>(kMaxCandidates, 1))),
-          childCount(std::vector<uint16_t>(kDirectChildCounts + 1, 1)) {}
+          childCount(kChildCountContexts, AdaptiveFrequencies(std::vector<uint16_t>(kDirectChildCounts + 1, 1))) {
+        // A flag is mostly "no": start each at 1/8 rather than 1/2 (small
+        // meshes have too few vertices to learn 288 contexts from even odds).
+        for (auto& byCandidate : isChoice)
+            for (auto& byDistance : byCandidate)
+                for (auto& byPrevious : byDistance)
+                    for (BitModel& m : byPrevious) m = BitModel(65536 / 8);
+    }
 
     // Starts vertex `self` (the next decoded index): its parent is known,
     // its residuals not yet.
@@ -59,6 +154,12 @@ struct CodingState {
     void place(uint32_t self, GridPoint at) {
         pos.push_back(at);
         cells.insert(self, at);
+    }
+    int residualGroup(uint32_t choice) const { return flags && choice != 0 ? 1 : 0; }
+    AdaptiveFrequencies& childCountModel(uint32_t self) {
+        if (!flags) return childCount[0];
+        const uint32_t parent = parentOf[self];
+        return childCount[parent == kNoVertex ? kChildCountContexts - 1 : std::min<uint32_t>(childCountOf[parent], 2)];
     }
 };
 
@@ -82,21 +183,48 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j)
             if (i != j) p.add(at + (near[i] - near[j]));
+    if (s.flags) {
+        p.known[p.knownCount++] = at;
+        for (int i = 0; i < m; ++i) p.known[p.knownCount++] = near[i];
+        p.spacing2 = m > 0 ? distance2(at, near[m - 1]) : 0;
+        p.crowdRadius = int32_t(integerSqrt(uint64_t(p.spacing2)) / 5);
+    }
     return p;
+}
+
+BitModel& flagOf(CodingState& s, const Predictions& p, int c) {
+    return s.isChoice[c][distanceBucket(p, c)][s.previousChoice == uint32_t(c) ? 1 : 0][crowded(p, c)];
 }
 
 // What coding the next vertex from each candidate costs under the current
 // models, in bits: the residual per axis by its bit length, and naming the
 // candidate. Built once per step of the encoder, which then prices the
 // candidates of every vertex it might code next. (Floating point is fine
-// here: the choice is transmitted, the decoder never repeats this.)
+// here: the choice is transmitted, the decoder never repeats this.) The
+// encoder writes format 2 only.
 struct Pricing {
-    ResidualCosts axis[3];
+    ResidualCosts axis[kResidualGroups][3];
     double choice[kMaxCandidates];
-    Pricing(const CodingState& s, const Predictions& p, const AdaptiveFrequencies& choiceModel, const int* contexts) {
-        for (int a = 0; a < 3; ++a) axis[a] = ResidualCosts(s.axis[a], contexts[a]);
-        const double total = choiceModel.totalCount();
-        for (int c = 0; c < p.count; ++c) choice[c] = std::log2(total / choiceModel.countOf(uint32_t(c)));
+    Pricing(CodingState& s, const Predictions& p, const int* contexts) {
+        for (int g = 0; g < kResidualGroups; ++g)
+            for (int a = 0; a < 3; ++a) axis[g][a] = ResidualCosts(s.axis[g][a], contexts[a]);
+        const int last = lastFlagged(p);
+        double noSoFar = 0;  // the "no" flags of the candidates before
+        for (int c = 0; c < p.count; ++c) {
+            if (c > last || repeatsEarlier(p, c)) {
+                choice[c] = 1e300;  // never picked: an equal candidate comes first
+            } else if (c == last) {
+                choice[c] = noSoFar;
+            } else {
+                const BitModel& flag = flagOf(s, p, c);
+                choice[c] = noSoFar + flag.cost(1);
+                noSoFar += flag.cost(0);
+            }
+        }
+    }
+    double residual(GridPoint r, uint32_t c) const {
+        const ResidualCosts* a = axis[c == 0 ? 0 : 1];
+        return a[0](r.x) + a[1](r.y) + a[2](r.z);
     }
 };
 
@@ -109,19 +237,30 @@ struct Pick {
 Pick bestPrediction(const Pricing& price, const Predictions& p, GridPoint actual) {
     Pick best;
     for (uint32_t c = 0; c < uint32_t(p.count); ++c) {
-        const GridPoint r = actual - p.candidate[c];
-        const double cost = price.axis[0](r.x) + price.axis[1](r.y) + price.axis[2](r.z) + price.choice[c];
+        const double cost = price.residual(actual - p.candidate[c], c) + price.choice[c];
         if (cost < best.bits) best = {c, cost};
     }
     return best;
 }
 
-AdaptiveFrequencies& choiceModelOf(CodingState& s) {
-    return s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
-}
-
 void magnitudeContexts(const CodingState& s, uint32_t self, uint32_t parent, int* contexts) {
     for (int a = 0; a < 3; ++a) contexts[a] = magnitudeContext(s, self, parent, a);
+}
+
+// Names candidate `best` (encoder) or reads which was named (decoder).
+template <class Io>
+uint32_t codeChoice(Io& io, CodingState& s, const Predictions& p, uint32_t best) {
+    if (!s.flags) {
+        AdaptiveFrequencies& model = s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
+        const uint32_t choice = io.symbol(model, best);
+        if (choice >= uint32_t(p.count))
+            throw Error(ErrorKind::Corrupt, "corrupt file: a geometry predictor choice is out of range");
+        return choice;
+    }
+    const int last = lastFlagged(p);
+    for (int c = 0; c < last; ++c)
+        if (!repeatsEarlier(p, c) && io.bit(flagOf(s, p, c), best == uint32_t(c))) return uint32_t(c);
+    return uint32_t(last);
 }
 
 // Codes (or decodes) vertex `self`, a child of `parent`, from the
@@ -132,21 +271,19 @@ constexpr uint32_t kNotChosen = kNoIndex;
 template <class Io>
 GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, const Predictions& p, GridPoint actual,
                     uint32_t chosen = kNotChosen) {
-    AdaptiveFrequencies& choiceModel = choiceModelOf(s);
     int contexts[3];
     magnitudeContexts(s, self, parent, contexts);
     uint32_t best = 0;
-    if (Io::kEncoding)
-        best = chosen != kNotChosen ? chosen : bestPrediction(Pricing(s, p, choiceModel, contexts), p, actual).candidate;
-    const uint32_t choice = io.symbol(choiceModel, best);
-    if (choice >= uint32_t(p.count)) throw Error(ErrorKind::Corrupt, "corrupt file: a geometry predictor choice is out of range");
+    if (Io::kEncoding) best = chosen != kNotChosen ? chosen : bestPrediction(Pricing(s, p, contexts), p, actual).candidate;
+    const uint32_t choice = codeChoice(io, s, p, best);
     s.previousChoice = choice;
     const GridPoint base = p.candidate[choice];
     const GridPoint r = actual - base;
     int32_t out[3];
     const int32_t in[3] = {r.x, r.y, r.z};
+    AxisModels* models = s.axis[s.residualGroup(choice)];
     for (int a = 0; a < 3; ++a) {
-        out[a] = codeResidual(io, s.axis[a], contexts[a], in[a]);
+        out[a] = codeResidual(io, models[a], contexts[a], in[a]);
         s.magnitude[3 * size_t(self) + size_t(a)] = magnitudeOf(out[a]);
     }
     return {int32_t(int64_t(base.x) + out[0]), int32_t(int64_t(base.y) + out[1]), int32_t(int64_t(base.z) + out[2])};
@@ -159,7 +296,8 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, Grid
 
 template <class Io>
 uint32_t codeChildCount(Io& io, CodingState& s, uint32_t count) {
-    const uint32_t symbol = io.symbol(s.childCount, std::min(count, kDirectChildCounts));
+    const uint32_t symbol = io.symbol(s.childCountModel(uint32_t(s.pos.size() - 1)), std::min(count, kDirectChildCounts));
+    s.childCountOf.push_back(uint8_t(symbol));
     if (symbol < kDirectChildCounts) return symbol;
     // Elias gamma of w >= 1: n - 1 zero bits, a one bit, then the n - 1 bits
     // below the leading one.
@@ -211,10 +349,11 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
     // Per vertex, where its undecoded neighbours begin: a vertex decoded
     // stays decoded, so the cursor only moves on.
     std::vector<uint32_t> cursor(graph.offset.begin(), graph.offset.end() - 1);  // offset has n + 1 entries
-    CodingState s(cellBits);
+    CodingState s(cellBits, kFileFormatVersion);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
+    s.childCountOf.reserve(n);
     Rehearsal io;
     struct Frame {
         uint32_t vertex, decoded;
@@ -241,7 +380,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
             const Predictions p = predict(s, self, top.decoded);
             int contexts[3];
             magnitudeContexts(s, self, top.decoded, contexts);
-            const Pricing price(s, p, choiceModelOf(s), contexts);
+            const Pricing price(s, p, contexts);
             uint32_t next = *first;  // *first is undecoded: a pick even if every price were NaN
             Pick nextPick = bestPrediction(price, p, gridPointOf(grid, next));
             for (const uint32_t* w = first + 1; w != last; ++w) {
@@ -272,10 +411,11 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
     RangeEncoder coder;
     Writer io{coder};
     coder.encodeBits(uint32_t(cellBits), kCellBitsWidth);
-    CodingState s(cellBits);
+    CodingState s(cellBits, kFileFormatVersion);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
+    s.childCountOf.reserve(n);
     TreeWalk walk;
     for (uint32_t self = 0; self < n; ++self) {
         const uint32_t vertex = order[self];
@@ -325,7 +465,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     return best;
 }
 
-std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
+std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
     // Every vertex but a root codes at least five adaptive decisions (a
     // predictor choice, three residual zero flags, a child count). No
     // binary model gives a decision a probability above 4095/4096, and a
@@ -345,11 +485,12 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     // The count is only a claim until the stream delivers the vertices:
     // tables grow as they are decoded, so a short or garbage section fails
     // before memory is committed to it.
-    CodingState s(cellBits);
+    CodingState s(cellBits, formatVersion);
     const size_t initial = std::min<size_t>(n, size_t(1) << 16);
     s.pos.reserve(initial);
     s.parentOf.reserve(initial);
     s.magnitude.reserve(3 * initial);
+    s.childCountOf.reserve(initial);
     TreeWalk walk;
     uint64_t promised = 0;  // children announced but not yet decoded
     for (uint32_t self = 0; self < n; ++self) {

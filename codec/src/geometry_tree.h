@@ -29,9 +29,11 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     NeighbourIndex index = NeighbourIndex::Auto,
                                     GeometryTree tree = GeometryTree::Smaller);
 
-// Throws Error on data that does not decode to exactly vertexCount vertices
-// on the grid.
-std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits);
+// Reads a section in the syntax of format version 1 or 2 (docs/format.md;
+// the encoder writes kFileFormatVersion's). Throws Error on data that does
+// not decode to exactly vertexCount vertices on the grid.
+std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits,
+                                        int formatVersion = kFileFormatVersion);
 
 }  // namespace drm
 

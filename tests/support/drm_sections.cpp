@@ -46,10 +46,10 @@ bool parseSections(const std::vector<uint8_t>& file, std::vector<SectionSpan>* s
     return parseSections(file.data(), file.size(), sections);
 }
 
-uint32_t crc32(const uint8_t* data, size_t size) {
+uint32_t crc32(const uint8_t* data, size_t size, uint32_t previous) {
     // Bitwise: these files are small, and a table would be one more thing
     // that could share a mistake with the codec's.
-    uint32_t crc = 0xFFFFFFFFu;
+    uint32_t crc = previous ^ 0xFFFFFFFFu;
     for (size_t i = 0; i < size; ++i) {
         crc ^= data[i];
         for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
@@ -62,9 +62,16 @@ void appendVarint(std::vector<uint8_t>& out, uint64_t value) {
     out.push_back(uint8_t(value));
 }
 
+uint32_t sectionChecksum(const uint8_t* preamble, const std::vector<uint8_t>& payload) {
+    const unsigned version = unsigned(preamble[kSignatureSize]) | unsigned(preamble[kSignatureSize + 1]) << 8;
+    const uint32_t before = version >= 2 ? crc32(preamble + kSignatureSize, 2) : 0;
+    return crc32(payload.data(), payload.size(), before);
+}
+
 void appendSection(std::vector<uint8_t>& out, const std::vector<uint8_t>& payload) {
+    if (out.size() < kPreambleSize) throw std::invalid_argument("appendSection: no preamble to append to");
+    const uint32_t crc = sectionChecksum(out.data(), payload);
     appendVarint(out, payload.size());
-    const uint32_t crc = crc32(payload.data(), payload.size());
     for (int i = 0; i < 4; ++i) out.push_back(uint8_t(crc >> (8 * i)));
     out.insert(out.end(), payload.begin(), payload.end());
 }

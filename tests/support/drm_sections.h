@@ -34,10 +34,14 @@ bool parseSections(const uint8_t* data, size_t size, std::vector<SectionSpan>* s
 bool parseSections(const std::vector<uint8_t>& file, std::vector<SectionSpan>* sections);
 
 // The CRC-32 of docs/format.md (reflected, polynomial 0xEDB88320, initial
-// value and final xor 0xFFFFFFFF).
-uint32_t crc32(const uint8_t* data, size_t size);
+// value and final xor 0xFFFFFFFF), continuing from that of what came before.
+uint32_t crc32(const uint8_t* data, size_t size, uint32_t previous = 0);
+// A section's checksum in a file with this preamble: from version 2 it
+// covers the two version bytes before the payload.
+uint32_t sectionChecksum(const uint8_t* preamble, const std::vector<uint8_t>& payload);
 
 void appendVarint(std::vector<uint8_t>& out, uint64_t value);
+// Appends a section to out, which starts with the file's preamble.
 void appendSection(std::vector<uint8_t>& out, const std::vector<uint8_t>& payload);
 
 // A container from a 10-byte preamble and payloads, with correct lengths
