@@ -121,6 +121,7 @@ constexpr int kChildCountContexts = 4;
 // Everything both sides track while walking the tree.
 struct CodingState {
     bool flags;                        // format 2's syntax (else format 1's)
+    bool choiceFlags;                  // format 2's choice as flags (else one symbol, as in format 1)
     std::vector<GridPoint> pos;        // decoded positions
     std::vector<uint32_t> parentOf;    // decoded parent, kNoVertex for roots
     std::vector<uint32_t> magnitude;   // |residual| per axis, 3 per vertex
@@ -132,8 +133,9 @@ struct CodingState {
     std::vector<AdaptiveFrequencies> childCount;                     // [context]
     uint32_t previousChoice = 0;
 
-    CodingState(int cellBits, int formatVersion)
+    CodingState(int cellBits, int formatVersion, bool flagChoices)
         : flags(formatVersion >= 2),
+          choiceFlags(formatVersion >= 2 && flagChoices),
           cells(cellBits),
           predictorChoice(kChoiceContexts, AdaptiveFrequencies(std::vector<uint16_t>(kMaxCandidates, 1))),
           childCount(kChildCountContexts, AdaptiveFrequencies(std::vector<uint16_t>(kDirectChildCounts + 1, 1))) {
@@ -183,7 +185,7 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j)
             if (i != j) p.add(at + (near[i] - near[j]));
-    if (s.flags) {
+    if (s.choiceFlags) {
         p.known[p.knownCount++] = at;
         for (int i = 0; i < m; ++i) p.known[p.knownCount++] = near[i];
         p.spacing2 = m > 0 ? distance2(at, near[m - 1]) : 0;
@@ -208,6 +210,12 @@ struct Pricing {
     Pricing(CodingState& s, const Predictions& p, const int* contexts) {
         for (int g = 0; g < kResidualGroups; ++g)
             for (int a = 0; a < 3; ++a) axis[g][a] = ResidualCosts(s.axis[g][a], contexts[a]);
+        if (!s.choiceFlags) {
+            const AdaptiveFrequencies& model = s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
+            const double total = model.totalCount();
+            for (int c = 0; c < p.count; ++c) choice[c] = std::log2(total / model.countOf(uint32_t(c)));
+            return;
+        }
         const int last = lastFlagged(p);
         double noSoFar = 0;  // the "no" flags of the candidates before
         for (int c = 0; c < p.count; ++c) {
@@ -250,7 +258,7 @@ void magnitudeContexts(const CodingState& s, uint32_t self, uint32_t parent, int
 // Names candidate `best` (encoder) or reads which was named (decoder).
 template <class Io>
 uint32_t codeChoice(Io& io, CodingState& s, const Predictions& p, uint32_t best) {
-    if (!s.flags) {
+    if (!s.choiceFlags) {
         AdaptiveFrequencies& model = s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
         const uint32_t choice = io.symbol(model, best);
         if (choice >= uint32_t(p.count))
@@ -342,14 +350,14 @@ constexpr size_t kMaxNeighboursLooked = 32;
 // orders by how well a vertex can be predicted. Returns child lists of
 // input vertices, in coding order.
 std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>& grid, const NeighbourGraph& graph,
-                                                     int cellBits) {
+                                                     int cellBits, bool flagChoices) {
     const size_t n = grid.size() / 3;
     std::vector<std::vector<uint32_t>> children(n);
     std::vector<uint8_t> done(n, 0);
     // Per vertex, where its undecoded neighbours begin: a vertex decoded
     // stays decoded, so the cursor only moves on.
     std::vector<uint32_t> cursor(graph.offset.begin(), graph.offset.end() - 1);  // offset has n + 1 entries
-    CodingState s(cellBits, kFileFormatVersion);
+    CodingState s(cellBits, kFileFormatVersion, flagChoices);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
@@ -403,15 +411,18 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
     return children;
 }
 
-// The tree's section: the cell size, then each vertex in preorder (a root
-// raw, any other as a predicted residual) with its child count.
+// The tree's section: the cell size, how the predictor choice is coded,
+// then each vertex in preorder (a root raw, any other as a predicted
+// residual) with its child count.
 std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int cellBits,
-                              const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order) {
+                              const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order,
+                              bool flagChoices) {
     const size_t n = order.size();
     RangeEncoder coder;
     Writer io{coder};
     coder.encodeBits(uint32_t(cellBits), kCellBitsWidth);
-    CodingState s(cellBits, kFileFormatVersion);
+    coder.encodeBits(flagChoices ? 1 : 0, 1);
+    CodingState s(cellBits, kFileFormatVersion, flagChoices);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
@@ -436,31 +447,41 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
 
 }  // namespace
 
-// Two trees, the smaller section kept (the decoder reads either the same
-// way): the cheapest-first tree wins on most meshes (fandisk 13.26 -> 10.30
-// bpv, bunny 11.44 -> 11.32), the minimum spanning tree with its children
-// ordered straight on still wins on some regular CAD meshes (blade 3.67
-// against 4.20, tray-bottom 8.50 against 9.56).
+// Two trees, each with the choice coded both ways, the smallest section
+// kept (the decoder reads any the same way): the cheapest-first tree wins
+// on most meshes (fandisk 13.26 -> 10.30 bpv, bunny 11.44 -> 11.32), the
+// minimum spanning tree with its children ordered straight on still wins on
+// some regular CAD meshes (blade 3.67 against 4.20, tray-bottom 8.50
+// against 9.56). Flags win on most meshes (bunny 11.31 -> 10.90 bpv); one
+// symbol on coarse grids, where candidates pile up (refine's coarse tree:
+// dinosaur-24k 14.05 -> 13.67), and on some artist meshes (hero 21.29 ->
+// 20.91).
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
-                                    GeometryTree which) {
+                                    GeometryTree which, ChoiceCoding choices) {
     const NearestNeighbours nearest = nearestNeighbours(grid, index, kNeighbours);
     const int cellBits = cellBitsFor(nearest.spacing, bits);
     GeometryEncoding best;
-    bool first = true;
-    for (GeometryTree tree : {GeometryTree::CheapestFirst, GeometryTree::SpanningTree}) {
-        if (which != GeometryTree::Smaller && which != tree) continue;
-        std::vector<std::vector<uint32_t>> children;
-        if (tree == GeometryTree::CheapestFirst) {
-            children = cheapestFirstTree(grid, symmetricGraph(nearest, kTreeNeighbours), cellBits);
-        } else {
-            children = spanningForest(grid, nearest);
-            orderChildrenForPrediction(grid, children);
+    auto keepSmaller = [&](const std::vector<std::vector<uint32_t>>& children, bool flagChoices) {
+        std::vector<uint32_t> order = preorder(children);
+        std::vector<uint8_t> bytes = codeTree(grid, bits, cellBits, children, order, flagChoices);
+        if (best.bytes.empty() || bytes.size() < best.bytes.size()) best = {std::move(bytes), std::move(order)};
+    };
+    NeighbourGraph graph;
+    std::vector<std::vector<uint32_t>> spanning;
+    for (ChoiceCoding coding : {ChoiceCoding::Flags, ChoiceCoding::Symbol}) {
+        if (choices != ChoiceCoding::Smaller && choices != coding) continue;
+        const bool flagChoices = coding == ChoiceCoding::Flags;
+        if (which != GeometryTree::SpanningTree) {  // grown under the coding it is written with
+            if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
+            keepSmaller(cheapestFirstTree(grid, graph, cellBits, flagChoices), flagChoices);
         }
-        GeometryEncoding candidate;
-        candidate.order = preorder(children);
-        candidate.bytes = codeTree(grid, bits, cellBits, children, candidate.order);
-        if (first || candidate.bytes.size() < best.bytes.size()) best = std::move(candidate);
-        first = false;
+        if (which != GeometryTree::CheapestFirst) {
+            if (spanning.empty()) {
+                spanning = spanningForest(grid, nearest);
+                orderChildrenForPrediction(grid, spanning);
+            }
+            keepSmaller(spanning, flagChoices);
+        }
     }
     return best;
 }
@@ -481,11 +502,12 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     RangeDecoder coder(data, size);
     Reader io{coder};
     const int cellBits = int(coder.decodeBits(kCellBitsWidth));
+    const bool flagChoices = formatVersion >= 2 && coder.decodeBits(1) == 1;
     if (cellBits > bits) throw Error(ErrorKind::Corrupt, "corrupt file: the geometry section's cell size is larger than the grid");
     // The count is only a claim until the stream delivers the vertices:
     // tables grow as they are decoded, so a short or garbage section fails
     // before memory is committed to it.
-    CodingState s(cellBits, formatVersion);
+    CodingState s(cellBits, formatVersion, flagChoices);
     const size_t initial = std::min<size_t>(n, size_t(1) << 16);
     s.pos.reserve(initial);
     s.parentOf.reserve(initial);

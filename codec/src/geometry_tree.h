@@ -24,10 +24,14 @@ struct GeometryEncoding {
 // Which tree the encoder builds: by default both, keeping the smaller
 // section (the decoder reads either the same way).
 enum class GeometryTree { Smaller, CheapestFirst, SpanningTree };
+// How the section names each vertex's predictor (format 2): one flag per
+// candidate, or one symbol over all; by default both are tried.
+enum class ChoiceCoding { Smaller, Flags, Symbol };
 
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     NeighbourIndex index = NeighbourIndex::Auto,
-                                    GeometryTree tree = GeometryTree::Smaller);
+                                    GeometryTree tree = GeometryTree::Smaller,
+                                    ChoiceCoding choices = ChoiceCoding::Smaller);
 
 // Reads a section in the syntax of format version 1 or 2 (docs/format.md;
 // the encoder writes kFileFormatVersion's). Throws Error on data that does
