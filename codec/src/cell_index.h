@@ -89,8 +89,10 @@ public:
 
     // The up to kNearest decoded vertices nearest `at` (other than `self`)
     // in the 2x2x2 block of cells around it (its own cell and, on each axis,
-    // the neighbour on its nearer side), nearest first; ties go to the later
-    // vertex. Returns how many.
+    // the neighbour on its nearer side), nearest first; ties go to the one
+    // seen first: cells in corner order 0..7 (corner 0 is at's own cell; bit
+    // 0 of the corner steps on x, bit 1 on y, bit 2 on z), each cell's
+    // vertices from the latest decoded down. Returns how many.
     int nearest(const std::vector<GridPoint>& pos, uint32_t self, GridPoint at, GridPoint* near) const {
         const int64_t side = int64_t(1) << cellBits_;
         const int64_t half = side >> 1;

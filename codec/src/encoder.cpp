@@ -286,7 +286,8 @@ constexpr double kRefineMinimumGain = kAutoRefineMinimumGainPercent / 100.0;
 size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::vector<uint32_t>& triangles, int bits,
                               int lowBits, NeighbourIndex index) {
     const GeometryEncoding tree =
-        encodeGeometryTree(coarsenGrid(quantized, lowBits), bits - lowBits, index, GeometryTree::CheapestFirst);
+        encodeGeometryTree(coarsenGrid(quantized, lowBits), bits - lowBits, index, GeometryTree::CheapestFirst,
+                           ChoiceCoding::Smaller);  // as refine codes it: both ways (two trees grown)
     std::vector<uint32_t> decodedIndex(tree.order.size());
     std::vector<int32_t> fine(quantized.size());
     for (size_t d = 0; d < tree.order.size(); ++d) {

@@ -18,7 +18,7 @@
 namespace drm {
 namespace {
 
-constexpr int kChoiceContexts = 4;  // format 1's predictor choice tables: by the previous choice, clamped
+constexpr int kChoiceContexts = 4;  // the one-symbol choice's tables (format 1, and 2 with F = 0): by the previous choice, clamped
 constexpr uint32_t kDirectChildCounts = 8;  // 0..7, then an escape
 
 // The decoded points a prediction is built from are the kNearest decoded
@@ -35,6 +35,10 @@ struct Predictions {
     // The candidates again, one array per axis, padded with points far from
     // every candidate: crowding is a short branch-free scan over them.
     static constexpr int32_t kFar = -(1 << 28);
+    // Candidates lie within [-2^21, 2^22] (21-bit coordinates, reflections
+    // and parallelograms of them): far from kFar, and crowded()'s
+    // differences fit in int32.
+    static_assert(kMaxQuantizationBits <= 21, "candidates must stay far from kFar");
     int32_t xs[kPaddedCandidates], ys[kPaddedCandidates], zs[kPaddedCandidates];
     // The decoded points the candidates are built from, the parent first.
     GridPoint known[1 + kNearest];
@@ -59,7 +63,8 @@ struct Predictions {
     }
 };
 
-// floor(sqrt(v)), exactly on every machine (the double is only a start).
+// floor(sqrt(v)), exactly on every machine (the double is only a start),
+// for v below 2^62 (squared distances of 21-bit coordinates: below 2^45).
 uint32_t integerSqrt(uint64_t v) {
     uint64_t r = uint64_t(std::sqrt(double(v)));
     while (r * r > v) --r;
@@ -67,16 +72,19 @@ uint32_t integerSqrt(uint64_t v) {
     return uint32_t(r);
 }
 
-// Format 2 names the predictor with a yes/no flag per candidate, in index
-// order, each in a context of what the decoder can see about it:
-// - how near it lies to a decoded point (in quarters of the spacing: a
-//   vertex is rarely right next to one already decoded, so a candidate on
-//   top of a decoded point is rarely the one);
+// Format 2 can name the predictor (when the section's bit F is 1) with a
+// yes/no flag per candidate, in index order, each in a context of what the
+// decoder can see about it:
+// - how near it lies to a decoded point (under a quarter, half, or one
+//   spacing, or farther: a vertex is rarely right next to one already
+//   decoded, so a candidate on top of a decoded point is rarely the one);
 // - whether it was the previous vertex's choice;
 // - whether another candidate crowds it.
 // A candidate equal to an earlier one has no flag, nor has the last one
 // left (a "no" to every other names it). Against one symbol over all
-// candidates this is 2 % smaller on the corpus (docs/geometry-ablation.md).
+// candidates this is 2 % smaller on the corpus (docs/geometry-ablation.md,
+// "Format 2"); one symbol still wins on coarse grids, where candidates
+// pile up.
 constexpr int kDistanceBuckets = 4;
 int distanceBucket(const Predictions& p, int c) {
     if (p.spacing2 == 0) return kDistanceBuckets - 1;
@@ -115,26 +123,27 @@ int lastFlagged(const Predictions& p) {
 constexpr int kResidualGroups = 2;
 
 // Format 2 codes a child count in a context of the parent's own child
-// count (0, 1, 2 or more; roots apart); format 1 has one table.
+// count (1, 2, 3 or more: a parent has at least one; roots apart); format 1
+// has one table.
 constexpr int kChildCountContexts = 4;
 
 // Everything both sides track while walking the tree.
 struct CodingState {
-    bool flags;                        // format 2's syntax (else format 1's)
-    bool choiceFlags;                  // format 2's choice as flags (else one symbol, as in format 1)
+    bool version2;                     // format 2's residual models and child-count contexts (else format 1's)
+    bool choiceFlags;                  // the choice as flags (format 2, F = 1), else one symbol
     std::vector<GridPoint> pos;        // decoded positions
     std::vector<uint32_t> parentOf;    // decoded parent, kNoVertex for roots
     std::vector<uint32_t> magnitude;   // |residual| per axis, 3 per vertex
     std::vector<uint8_t> childCountOf; // decoded child-count symbols (8: escaped)
     DecodedCells cells;
     AxisModels axis[kResidualGroups][3];  // [residual group][axis]
-    std::vector<AdaptiveFrequencies> predictorChoice;                // format 1: [previous choice, clamped]
-    BitModel isChoice[kMaxCandidates][kDistanceBuckets][2][2];       // format 2: [candidate][distance][was previous][crowded]
+    std::vector<AdaptiveFrequencies> predictorChoice;                // one symbol: [previous choice, clamped]
+    BitModel isChoice[kMaxCandidates][kDistanceBuckets][2][2];       // flags: [candidate][distance][was previous][crowded]
     std::vector<AdaptiveFrequencies> childCount;                     // [context]
     uint32_t previousChoice = 0;
 
     CodingState(int cellBits, int formatVersion, bool flagChoices)
-        : flags(formatVersion >= 2),
+        : version2(formatVersion >= 2),
           choiceFlags(formatVersion >= 2 && flagChoices),
           cells(cellBits),
           predictorChoice(kChoiceContexts, AdaptiveFrequencies(std::vector<uint16_t>(kMaxCandidates, 1))),
@@ -157,11 +166,13 @@ struct CodingState {
         pos.push_back(at);
         cells.insert(self, at);
     }
-    int residualGroup(uint32_t choice) const { return flags && choice != 0 ? 1 : 0; }
+    int residualGroup(uint32_t choice) const { return version2 && choice != 0 ? 1 : 0; }
     AdaptiveFrequencies& childCountModel(uint32_t self) {
-        if (!flags) return childCount[0];
+        if (!version2) return childCount[0];
         const uint32_t parent = parentOf[self];
-        return childCount[parent == kNoVertex ? kChildCountContexts - 1 : std::min<uint32_t>(childCountOf[parent], 2)];
+        if (parent == kNoVertex) return childCount[kChildCountContexts - 1];
+        const uint8_t ofParent = childCountOf[parent];  // at least 1: it announced this child
+        return childCount[ofParent >= 3 ? 2 : ofParent == 2 ? 1 : 0];
     }
 };
 
@@ -487,12 +498,13 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
 }
 
 std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
-    // Every vertex but a root codes at least five adaptive decisions (a
-    // predictor choice, three residual zero flags, a child count). No
-    // binary model gives a decision a probability above 4095/4096, and a
-    // table of k symbols none above 1 - (k-1)/65568, so a vertex costs at
-    // least ~0.0017 bits: at most ~4700 vertices per byte. A count far
-    // beyond that is refused before anything is allocated.
+    // Every vertex but a root codes at least four adaptive decisions (three
+    // residual zero flags and a child count; a predictor choice too, unless
+    // every candidate repeats the parent). No binary model gives a decision
+    // a probability above 4095/4096, and a table of k symbols none above
+    // 1 - (k-1)/65568, so a vertex costs at least ~0.0012 bits: at most
+    // ~6500 vertices per byte. A count far beyond that is refused before
+    // anything is allocated.
     constexpr uint64_t kMaxVerticesPerByte = 8192;
     if (vertexCount > (uint64_t(size) + 8) * kMaxVerticesPerByte)
         throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(vertexCount) + " vertices cannot fit in a geometry section of " +

@@ -37,7 +37,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
 // the encoder writes kFileFormatVersion's). Throws Error on data that does
 // not decode to exactly vertexCount vertices on the grid.
 std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits,
-                                        int formatVersion = kFileFormatVersion);
+                                        int formatVersion);
 
 }  // namespace drm
 

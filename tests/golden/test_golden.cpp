@@ -35,5 +35,8 @@ TEST(GoldenFormat1, Torus) { expectDecodesToGolden("torus", "/v1", 1); }
 TEST(GoldenFormat1, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v1", 1); }
 TEST(GoldenFormat1, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v1", 1); }
 TEST(GoldenFormat1, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v1", 1); }
+// Written by the format 1 encoder (5b602d2) for this folder: refine's coarse
+// tree in format 1's syntax.
+TEST(GoldenFormat1, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v1", 1); }
 
 }  // namespace

@@ -21,7 +21,7 @@ void expectRoundTrip(const std::vector<int32_t>& grid, int bits, GeometryTree tr
     const GeometryEncoding encoded = encodeGeometryTree(grid, bits, NeighbourIndex::Auto, tree, choices);
     const size_t n = grid.size() / 3;
     ASSERT_EQ(encoded.order.size(), n);
-    const std::vector<int32_t> decoded = decodeGeometryTree(encoded.bytes.data(), encoded.bytes.size(), n, bits);
+    const std::vector<int32_t> decoded = decodeGeometryTree(encoded.bytes.data(), encoded.bytes.size(), n, bits, kFileFormatVersion);
     for (size_t d = 0; d < n; ++d)
         for (int k = 0; k < 3; ++k) ASSERT_EQ(decoded[3 * d + k], grid[3 * size_t(encoded.order[d]) + k]) << "vertex " << d;
     std::vector<int> seen(n, 0);
@@ -166,7 +166,7 @@ TEST(GeometryTree, AutoKeepsRefineOnlyWhereItPays) {
 
 TEST(GeometryTree, RefusesCountsNoStreamCouldHold) {
     const std::vector<uint8_t> tiny = {0, 0, 0, 0};
-    EXPECT_THROW(decodeGeometryTree(tiny.data(), tiny.size(), uint64_t(1) << 30, 12), Error);
+    EXPECT_THROW(decodeGeometryTree(tiny.data(), tiny.size(), uint64_t(1) << 30, 12, kFileFormatVersion), Error);
 }
 
 }  // namespace
