@@ -22,6 +22,15 @@ public:
     BitModel() = default;
     // Starts with P(1) = ofOne65536 / 65536 (the default is 1/2).
     explicit BitModel(uint32_t ofOne65536) : fast_(ofOne65536), slow_(ofOne65536) {}
+    // A model that learns its first bits faster: each estimate is the plain
+    // average of what it has seen (rate 1/2, 1/3, ...) until that rate
+    // falls to its own fixed one. Small inputs, whose models see few bits,
+    // pay much less for learning.
+    static BitModel agile(uint32_t ofOne65536 = 32768) {
+        BitModel m(ofOne65536);
+        m.seen_ = 0;
+        return m;
+    }
     void encode(RangeEncoder& coder, int bit) {
         const uint32_t p1 = probabilityOfOne();
         if (bit) coder.encode(kOne - p1, p1, kOne);
@@ -62,6 +71,13 @@ private:
         return std::min(std::max(p, 1u), kOne - 1);
     }
     void update(int bit) {
+        if (seen_ < kSlowAfter) {
+            ++seen_;
+            const int32_t target = bit ? 65536 : 0, divisor = int32_t(seen_) + 1;
+            fast_ = uint32_t(int32_t(fast_) + (target - int32_t(fast_)) / std::min(divisor, int32_t(1) << kFast));
+            slow_ = uint32_t(int32_t(slow_) + (target - int32_t(slow_)) / divisor);
+            return;
+        }
         if (bit) {
             fast_ += (65536 - fast_) >> kFast;
             slow_ += (65536 - slow_) >> kSlow;
@@ -71,6 +87,10 @@ private:
         }
     }
     uint32_t fast_ = 32768, slow_ = 32768;
+    // Bits seen while agile; kSlowAfter (and so from the start, unless
+    // agile()) once the rates are the fixed ones.
+    static constexpr uint32_t kSlowAfter = (1u << kSlow) - 1;
+    uint32_t seen_ = kSlowAfter;
 };
 
 // Encoder and decoder run the same coding functions through one of these:

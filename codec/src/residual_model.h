@@ -24,6 +24,16 @@ struct AxisModels {
     BitModel longer[kMagnitudeContexts][kMaxLength];  // unary bit length: "longer than k"
     BitModel sign;
     BitModel low[kMaxLength + 1][kAdaptiveLowBits];  // by bit length, 1..kMaxLength
+
+    // Every model agile (BitModel::agile): format 2's vertex coder.
+    void makeAgile() {
+        for (BitModel& m : zero) m = BitModel::agile();
+        for (auto& byContext : longer)
+            for (BitModel& m : byContext) m = BitModel::agile();
+        sign = BitModel::agile();
+        for (auto& byLength : low)
+            for (BitModel& m : byLength) m = BitModel::agile();
+    }
 };
 
 // A residual: zero or not, the bit length n >= 1 in unary, the sign, then

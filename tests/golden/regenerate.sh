@@ -19,4 +19,5 @@ encode torus torus.ply                                  # regular, closed: near-
 encode nefertiti nefertiti.ply --levers none            # open, the paper's method
 encode blobby-3cc blobby-3cc.ply --keep-vertex-order    # 3 components with holes, all levers, vertex order kept
 encode star-raw star-cgal.ply --geometry raw --bits 8 --predictor parallelogram
+encode nefertiti-refine nefertiti.ply --geometry refine  # refine's coarse tree and low bits
 ls -l "$here"/*.drm

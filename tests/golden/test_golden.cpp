@@ -30,6 +30,7 @@ TEST(Golden, Torus) { expectDecodesToGolden("torus"); }
 TEST(Golden, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti"); }
 TEST(Golden, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc"); }
 TEST(Golden, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw"); }
+TEST(Golden, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine"); }
 
 TEST(GoldenFormat1, Torus) { expectDecodesToGolden("torus", "/v1", 1); }
 TEST(GoldenFormat1, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v1", 1); }
