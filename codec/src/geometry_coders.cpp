@@ -19,10 +19,10 @@ VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int 
     return out;
 }
 
-// SpanningTree: one pass (geometry_tree.h), the smaller of its two trees.
-// The full grid: flags name the predictors (growing and coding a second
-// tree with one symbol per choice would win 1-2 % on a few meshes, hero,
-// broken, torus, for 25 % more encoding time on all).
+// SpanningTree: one pass (geometry_tree.h), the smaller of its two trees,
+// flags naming the predictors (growing and coding a second tree with one
+// symbol per choice would win 1-2 % on a few meshes, hero, broken, torus,
+// for 25 % more encoding time on all).
 GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index) {
     return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, ChoiceCoding::Flags);
 }

@@ -121,6 +121,7 @@ int lastFlagged(const Predictions& p) {
 // edge) with models of its own, apart from the residuals from the other
 // candidates, which are small corrections; format 1 has one set.
 constexpr int kResidualGroups = 2;
+inline int residualGroup(bool version2, uint32_t choice) { return version2 && choice != 0 ? 1 : 0; }
 
 // Format 2 codes a child count in a context of the parent's own child
 // count (1, 2, 3 or more: a parent has at least one; roots apart); format 1
@@ -170,7 +171,6 @@ struct CodingState {
         pos.push_back(at);
         cells.insert(self, at);
     }
-    int residualGroup(uint32_t choice) const { return version2 && choice != 0 ? 1 : 0; }
     AdaptiveFrequencies& childCountModel(uint32_t self) {
         if (!version2) return childCount[0];
         const uint32_t parent = parentOf[self];
@@ -222,7 +222,8 @@ BitModel& flagOf(CodingState& s, const Predictions& p, int c) {
 struct Pricing {
     ResidualCosts axis[kResidualGroups][3];
     double choice[kMaxCandidates];
-    Pricing(CodingState& s, const Predictions& p, const int* contexts) {
+    bool version2;
+    Pricing(CodingState& s, const Predictions& p, const int* contexts) : version2(s.version2) {
         for (int g = 0; g < kResidualGroups; ++g)
             for (int a = 0; a < 3; ++a) axis[g][a] = ResidualCosts(s.axis[g][a], contexts[a]);
         if (!s.choiceFlags) {
@@ -246,7 +247,7 @@ struct Pricing {
         }
     }
     double residual(GridPoint r, uint32_t c) const {
-        const ResidualCosts* a = axis[c == 0 ? 0 : 1];
+        const ResidualCosts* a = axis[residualGroup(version2, c)];
         return a[0](r.x) + a[1](r.y) + a[2](r.z);
     }
 };
@@ -304,7 +305,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     const GridPoint r = actual - base;
     int32_t out[3];
     const int32_t in[3] = {r.x, r.y, r.z};
-    AxisModels* models = s.axis[s.residualGroup(choice)];
+    AxisModels* models = s.axis[residualGroup(s.version2, choice)];
     for (int a = 0; a < 3; ++a) {
         out[a] = codeResidual(io, models[a], contexts[a], in[a]);
         s.magnitude[3 * size_t(self) + size_t(a)] = magnitudeOf(out[a]);
