@@ -33,7 +33,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     GeometryTree tree = GeometryTree::Smaller,
                                     ChoiceCoding choices = ChoiceCoding::Smaller);
 
-// Reads a section in the syntax of format version 1 or 2 (docs/format.md;
+// Reads a section in the syntax of format version 1, 2 or 3 (docs/format.md;
 // the encoder writes kFileFormatVersion's). Throws Error on data that does
 // not decode to exactly vertexCount vertices on the grid.
 std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits,

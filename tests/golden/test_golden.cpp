@@ -2,8 +2,9 @@
 // decoded to then. Any change of the bitstream or of the decoder's output
 // fails here; an intended one regenerates them (regenerate.sh). The files
 // of each older format version the library still reads stay, frozen, in a
-// folder of their own (v1/: written before the vertex coder's format 2), so
-// the decoder keeps reading what users already have.
+// folder of their own (v1/: written before the vertex coder's format 2;
+// v2/: before format 3's local frame), so the decoder keeps reading what
+// users already have.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -39,5 +40,12 @@ TEST(GoldenFormat1, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", 
 // Written by the format 1 encoder (5b602d2) for this folder: refine's coarse
 // tree in format 1's syntax.
 TEST(GoldenFormat1, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v1", 1); }
+
+// Format 2's files, as its last encoder (82a4d0c) wrote them.
+TEST(GoldenFormat2, Torus) { expectDecodesToGolden("torus", "/v2", 2); }
+TEST(GoldenFormat2, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v2", 2); }
+TEST(GoldenFormat2, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v2", 2); }
+TEST(GoldenFormat2, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v2", 2); }
+TEST(GoldenFormat2, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v2", 2); }
 
 }  // namespace

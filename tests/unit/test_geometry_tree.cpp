@@ -79,26 +79,33 @@ TEST(GeometryTree, CheapestFirstTreeBeatsTheSpanningTreeOnFandisk) {
     EXPECT_LT(double(cheapest), 0.85 * double(spanning)) << cheapest << " against " << spanning << " bytes";
 }
 
-// The section's syntax follows the file's format version: a version 2
-// section read as version 1 (one symbol for the predictor choice) does not
-// give back the points, so the decoder must be told which it reads. (That
-// version 1 sections still decode is the golden files' test, tests/golden/v1.)
+// The section's syntax follows the file's format version: a section read
+// as an earlier version (version 1: one symbol for the predictor choice;
+// version 2: no local frame for the residual from the parent) does not give
+// back the points, so the decoder must be told which it reads. (That older
+// sections still decode is the golden files' test, tests/golden/v1 and v2.)
 TEST(GeometryTree, ReadsASectionInItsFormatVersionsSyntax) {
-    const std::vector<int32_t> grid = gridOf("fandisk.ply", 12);
-    const GeometryEncoding encoded = encodeGeometryTree(grid, 12);
-    const size_t n = grid.size() / 3;
-    const std::vector<int32_t> asWritten = decodeGeometryTree(encoded.bytes.data(), encoded.bytes.size(), n, 12, kFileFormatVersion);
-    std::vector<int32_t> expected(grid.size());
-    for (size_t d = 0; d < n; ++d)
-        for (int k = 0; k < 3; ++k) expected[3 * d + k] = grid[3 * size_t(encoded.order[d]) + k];
-    EXPECT_EQ(asWritten, expected);
-    bool misread = false;
-    try {
-        misread = decodeGeometryTree(encoded.bytes.data(), encoded.bytes.size(), n, 12, 1) != expected;
-    } catch (const Error& e) {
-        misread = e.kind() == ErrorKind::Corrupt;
+    for (const char* name : {"fandisk.ply", "bunny-lres.ply"}) {
+        SCOPED_TRACE(name);
+        const std::vector<int32_t> grid = gridOf(name, 12);
+        const GeometryEncoding encoded = encodeGeometryTree(grid, 12);
+        const size_t n = grid.size() / 3;
+        const std::vector<int32_t> asWritten =
+            decodeGeometryTree(encoded.bytes.data(), encoded.bytes.size(), n, 12, kFileFormatVersion);
+        std::vector<int32_t> expected(grid.size());
+        for (size_t d = 0; d < n; ++d)
+            for (int k = 0; k < 3; ++k) expected[3 * d + k] = grid[3 * size_t(encoded.order[d]) + k];
+        EXPECT_EQ(asWritten, expected);
+        for (int older = 1; older < kFileFormatVersion; ++older) {
+            bool misread = false;
+            try {
+                misread = decodeGeometryTree(encoded.bytes.data(), encoded.bytes.size(), n, 12, older) != expected;
+            } catch (const Error& e) {
+                misread = e.kind() == ErrorKind::Corrupt;
+            }
+            EXPECT_TRUE(misread) << "read as version " << older;
+        }
     }
-    EXPECT_TRUE(misread);
 }
 
 // Both ways of naming the predictor decode, on real meshes and on a coarse
