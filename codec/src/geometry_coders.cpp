@@ -20,11 +20,15 @@ VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int 
 }
 
 // SpanningTree: one pass (geometry_tree.h), the smaller of its two trees,
-// flags naming the predictors (growing and coding a second tree with one
-// symbol per choice would win 1-2 % on a few meshes, hero, broken, torus,
-// for 25 % more encoding time on all).
+// flags naming the predictors. On meshes of up to kBothChoiceCodingsUpTo
+// vertices, which encode in a fraction of a second, a second pair of trees
+// grown and coded with one symbol per choice is tried too: it wins 0.5-4.5 %
+// on some (triceratops, soup, fertility, hero: corpus geometry -0.23 % if
+// done on every mesh) but would cost every large mesh twice the time.
+constexpr size_t kBothChoiceCodingsUpTo = 32768;
 GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index) {
-    return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, ChoiceCoding::Flags);
+    const bool small = grid.size() / 3 <= kBothChoiceCodingsUpTo;
+    return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, small ? ChoiceCoding::Smaller : ChoiceCoding::Flags);
 }
 // Refine's coarse grid: candidates pile up on it, and a tree grown and
 // coded with one symbol per choice often wins (dinosaur-24k 14.05 -> 13.67
