@@ -2,6 +2,8 @@
 
 #include <drm/drm.h>
 
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -10,6 +12,12 @@ namespace cli {
 namespace {
 
 std::string range(int low, int high) { return std::to_string(low) + ".." + std::to_string(high); }
+// 12 as "12", 11.5 as "11.5".
+std::string decimal(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
 
 // "a, b or c".
 std::string listed(const std::vector<std::string>& names, const char* lastSeparator) {
@@ -45,7 +53,7 @@ std::vector<std::pair<std::string, std::string>> placeholders() {
         {"{default-predictor}", drm::predictorName(defaults.predictor)},
         {"{geometry-coders}", listed(coders, " or ")},
         {"{default-geometry}", drm::geometryCoderName(defaults.geometry)},
-        {"{auto-refine-above}", std::to_string(int(drm::kAutoRefineAboveBitsPerVertex))},
+        {"{auto-refine-above}", decimal(drm::kAutoRefineAboveBitsPerVertex)},
         {"{auto-refine-low-bits}", listed(autoLowBits, " and ")},
         {"{auto-refine-gain}", std::to_string(drm::kAutoRefineMinimumGainPercent)},
     };

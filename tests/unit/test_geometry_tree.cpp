@@ -141,7 +141,7 @@ TEST(GeometryTree, ManyCoincidentPointsCodeDensely) {
 // The default geometry (auto) against the tree alone, on real meshes: never
 // larger; refine where it pays at least 3 % (mech-holes-shark: the tree at
 // 14.4 bits per vertex in all, refine 13.5, 6 % smaller), the tree where refine is
-// not even tried (fandisk: 10.5 bits per vertex, under the 12 that make it
+// not even tried (fandisk: 10.5 bits per vertex, under the 11.5 that make it
 // worth trying), and every file decodes to the same quantized mesh.
 TEST(GeometryTree, AutoKeepsRefineOnlyWhereItPays) {
     for (const char* name : {"mech-holes-shark.ply", "genus3.ply", "nefertiti.ply", "fandisk.ply", "torus.ply", "elephant-with-holes.ply"}) {
