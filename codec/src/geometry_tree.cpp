@@ -149,6 +149,7 @@ struct CodingState {
     // 0.1 to 0.17 % of geometry).
     static constexpr int64_t kFrameMemory = 8;
     int64_t frameScore = 0;
+    uint64_t framedResiduals = 0;  // how many were coded in the frame (for tests and statistics)
     bool frameNow() const { return framedParent && frameScore > 0; }
 
     CodingState(int cellBits, int formatVersion, bool flagChoices)
@@ -376,6 +377,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     s.previousChoice = choice;
     const GridPoint base = p.candidate[choice];
     const bool inFrame = framed(s.frameNow(), choice);
+    s.framedResiduals += inFrame ? 1 : 0;
     GridPoint r = actual - base;
     if (Io::kEncoding && inFrame) r = toFrame(p.frame, r);
     int64_t out[3];
@@ -518,7 +520,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
 // residual) with its child count.
 std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int cellBits,
                               const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order,
-                              bool flagChoices) {
+                              bool flagChoices, uint64_t& framedResiduals) {
     const size_t n = order.size();
     RangeEncoder coder;
     Writer io{coder};
@@ -544,6 +546,7 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
         codeChildCount(io, s, uint32_t(children[vertex].size()));
         walk.expect(self, uint32_t(children[vertex].size()));
     }
+    framedResiduals = s.framedResiduals;
     return coder.finish();
 }
 
@@ -565,8 +568,9 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     GeometryEncoding best;
     auto keepSmaller = [&](const std::vector<std::vector<uint32_t>>& children, bool flagChoices) {
         std::vector<uint32_t> order = preorder(children);
-        std::vector<uint8_t> bytes = codeTree(grid, bits, cellBits, children, order, flagChoices);
-        if (best.bytes.empty() || bytes.size() < best.bytes.size()) best = {std::move(bytes), std::move(order)};
+        uint64_t framed = 0;
+        std::vector<uint8_t> bytes = codeTree(grid, bits, cellBits, children, order, flagChoices, framed);
+        if (best.bytes.empty() || bytes.size() < best.bytes.size()) best = {std::move(bytes), std::move(order), framed};
     };
     NeighbourGraph graph;
     std::vector<std::vector<uint32_t>> spanning;

@@ -19,6 +19,7 @@ namespace drm {
 struct GeometryEncoding {
     std::vector<uint8_t> bytes;
     std::vector<uint32_t> order;  // order[i] = input index of decoded vertex i
+    uint64_t framedResiduals = 0; // residuals coded in the parent's local frame (format 3)
 };
 
 // Which tree the encoder builds: by default both, keeping the smaller

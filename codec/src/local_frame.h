@@ -61,7 +61,8 @@ public:
         azimuth_.inverse(v[0], v[1]);
     }
 
-    // floor(sqrt(v)), exactly (the double is only a first guess).
+    // floor(sqrt(v)), exactly (the double is only a first guess), for v
+    // below 2^62 (the callers' squares stay below 2^46).
     static uint64_t isqrt(uint64_t v);
 
 private:
@@ -97,8 +98,9 @@ private:
             if (dv == 0 || length == 0) return;  // already on the axis
             // Rotating by -theta, where (du, dv) = length (cos theta, sin theta):
             // a = tan(theta / 2) = dv / (length + du), b = -sin(theta).
-            a = divideRounded(dv << kFractionBits, length + du);
-            b = -divideRounded(dv << kFractionBits, length);
+            const int64_t scaled = dv * (int64_t(1) << kFractionBits);  // not dv << 16: dv may be negative
+            a = divideRounded(scaled, length + du);
+            b = -divideRounded(scaled, length);
         }
         void forward(int64_t& u, int64_t& v) const {
             if (half) {

@@ -46,6 +46,17 @@ TEST(LocalFrame, EveryVectorComesBackExactly) {
         const LocalFrame frame = nearAxes ? LocalFrame(small(random), small(random), small(random))
                                           : LocalFrame(normal(random), normal(random), normal(random));
         for (int k = 0; k < 50; ++k) expectExactRoundTrip(frame, residual(random), residual(random), residual(random));
+        // And the other way round: whatever a corrupt file makes the decoder
+        // take out of the frame goes back in exactly.
+        for (int k = 0; k < 20; ++k) {
+            const int64_t x = residual(random) * 2, y = residual(random) * 2, z = residual(random) * 2;
+            int64_t v[3] = {x, y, z};
+            frame.fromFrame(v);
+            frame.toFrame(v);
+            EXPECT_EQ(v[0], x);
+            EXPECT_EQ(v[1], y);
+            EXPECT_EQ(v[2], z);
+        }
         for (int64_t x = -2; x <= 2; ++x)
             for (int64_t y = -2; y <= 2; ++y)
                 for (int64_t z = -2; z <= 2; ++z) expectExactRoundTrip(frame, x, y, z);
@@ -64,8 +75,8 @@ TEST(LocalFrame, TurnsTheNormalOntoTheThirdAxis) {
 }
 
 TEST(LocalFrame, AxisNormalsAndNoNormalLeaveTheGridAlone) {
-    // A normal along the third axis (either way up... the first is the
-    // identity) or none at all: residuals keep their zero components.
+    // A normal up the third axis, or none at all: the identity, so
+    // residuals keep their zero components.
     for (const LocalFrame& frame : {LocalFrame(), LocalFrame(0, 0, 5), LocalFrame(0, 0, 0)}) {
         int64_t v[3] = {17, 0, -3};
         frame.toFrame(v);
@@ -73,12 +84,23 @@ TEST(LocalFrame, AxisNormalsAndNoNormalLeaveTheGridAlone) {
         EXPECT_EQ(v[1], 0);
         EXPECT_EQ(v[2], -3);
     }
-    // Along the first axis: an exact quarter turn (a permutation up to sign).
-    const LocalFrame sideways(9, 0, 0);
+    // Down the third axis: a half turn in the (z, x) plane, exact.
+    int64_t down[3] = {17, 0, -3};
+    LocalFrame(0, 0, -5).toFrame(down);
+    EXPECT_EQ(down[0], -17);
+    EXPECT_EQ(down[1], 0);
+    EXPECT_EQ(down[2], 3);
+    // Along the first axis: an exact quarter turn, x onto z (the normal
+    // becomes the third axis) and z onto -x.
     int64_t v[3] = {0, 4, 11};
-    sideways.toFrame(v);
-    EXPECT_EQ(std::abs(v[0]) + std::abs(v[1]) + std::abs(v[2]), 15);
+    LocalFrame(9, 0, 0).toFrame(v);
+    EXPECT_EQ(v[0], -11);
     EXPECT_EQ(v[1], 4);
+    EXPECT_EQ(v[2], 0);
+    int64_t w[3] = {7, 0, 0};
+    LocalFrame(9, 0, 0).toFrame(w);
+    EXPECT_EQ(w[0], 0);
+    EXPECT_EQ(w[2], 7);
 }
 
 TEST(LocalFrame, IntegerSquareRootIsExact) {
