@@ -287,7 +287,7 @@ size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::
                               int lowBits, NeighbourIndex index) {
     const GeometryEncoding tree =
         encodeGeometryTree(coarsenGrid(quantized, lowBits), bits - lowBits, index, GeometryTree::CheapestFirst,
-                           ChoiceCoding::Smaller);  // as refine codes it: both ways (two trees grown)
+                           ChoiceCoding::Smaller, FrameUse::On);  // as refine codes it: both ways (two trees grown)
     std::vector<uint32_t> decodedIndex(tree.order.size());
     std::vector<int32_t> fine(quantized.size());
     for (size_t d = 0; d < tree.order.size(); ++d) {

@@ -20,21 +20,24 @@ VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int 
 }
 
 // SpanningTree: one pass (geometry_tree.h), the smaller of its two trees,
-// flags naming the predictors. On meshes of up to kBothChoiceCodingsUpTo
-// vertices, which encode in a fraction of a second, a second pair of trees
-// grown and coded with one symbol per choice is tried too: it wins 0.5-4.5 %
+// flags naming the predictors, the local frame allowed. On meshes of up to
+// kEveryTreeCodingUpTo vertices, which encode in a fraction of a second,
+// the trees are also grown and coded with one symbol per choice, and each
+// way without the frame, the smallest section kept: one symbol wins 0.5-4.5 %
 // on some (triceratops, soup, fertility, hero: corpus geometry -0.23 % if
-// done on every mesh) but would cost every large mesh twice the time.
-constexpr size_t kBothChoiceCodingsUpTo = 32768;
+// done on every mesh), no frame on some CAD meshes and terrains (tray-bottom,
+// casting, mountain); a large mesh would take four times as long.
+constexpr size_t kEveryTreeCodingUpTo = 32768;
 GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index) {
-    const bool small = grid.size() / 3 <= kBothChoiceCodingsUpTo;
-    return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, small ? ChoiceCoding::Smaller : ChoiceCoding::Flags);
+    const bool small = grid.size() / 3 <= kEveryTreeCodingUpTo;
+    return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, small ? ChoiceCoding::Smaller : ChoiceCoding::Flags,
+                              small ? FrameUse::Smaller : FrameUse::On);
 }
 // Refine's coarse grid: candidates pile up on it, and a tree grown and
 // coded with one symbol per choice often wins (dinosaur-24k 14.05 -> 13.67
 // bits per vertex): both are tried.
 GeometryEncoding encodeRefineCoarse(const std::vector<int32_t>& grid, int bits, NeighbourIndex index) {
-    return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, ChoiceCoding::Smaller);
+    return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::On);
 }
 VertexSet decodeTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
     VertexSet out;

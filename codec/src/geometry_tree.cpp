@@ -130,7 +130,8 @@ constexpr int kChildCountContexts = 4;
 // Everything both sides track while walking the tree.
 struct CodingState {
     bool version2;                     // format 2's residual models and child-count contexts (else format 1's)
-    bool framedParent;                 // format 3: the residual from the parent in its local frame
+    bool spacingContexts;              // format 3: the residual from the parent in contexts of the spacing
+    bool framedParent;                 // format 3 with the section's bit G: ... and in its local frame
     bool choiceFlags;                  // the choice as flags (format 2, F = 1), else one symbol
     std::vector<GridPoint> pos;        // decoded positions
     std::vector<uint32_t> parentOf;    // decoded parent, kNoVertex for roots
@@ -152,9 +153,10 @@ struct CodingState {
     uint64_t framedResiduals = 0;  // how many were coded in the frame (for tests and statistics)
     bool frameNow() const { return framedParent && frameScore > 0; }
 
-    CodingState(int cellBits, int formatVersion, bool flagChoices)
+    CodingState(int cellBits, int formatVersion, bool flagChoices, bool frameAllowed)
         : version2(formatVersion >= 2),
-          framedParent(formatVersion >= 3),
+          spacingContexts(formatVersion >= 3),
+          framedParent(formatVersion >= 3 && frameAllowed),
           choiceFlags(formatVersion >= 2 && flagChoices),
           cells(cellBits),
           predictorChoice(kChoiceContexts, AdaptiveFrequencies(std::vector<uint16_t>(kMaxCandidates, 1))),
@@ -229,7 +231,7 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j)
             if (i != j) p.add(at + (near[i] - near[j]));
-    if (s.choiceFlags || s.framedParent) {
+    if (s.choiceFlags || s.spacingContexts) {
         p.known[p.knownCount++] = at;
         for (int i = 0; i < m; ++i) p.known[p.knownCount++] = near[i];
         p.spacing2 = m > 0 ? distance2(at, near[m - 1]) : 0;
@@ -338,7 +340,7 @@ Pick bestPrediction(const Pricing& price, const Predictions& p, GridPoint actual
 void magnitudeContexts(const CodingState& s, const Predictions& p, uint32_t self, uint32_t parent,
                        int (*contexts)[3]) {
     for (int a = 0; a < 3; ++a) contexts[0][a] = contexts[1][a] = magnitudeContext(s, self, parent, a);
-    if (!s.framedParent || p.spacing2 == 0) return;
+    if (!s.spacingContexts || p.spacing2 == 0) return;
     const int length = bitLength(uint64_t(p.spacing2));
     const auto clamped = [](int c) { return std::max(0, std::min(c, kMagnitudeContexts - 1)); };
     contexts[0][0] = contexts[0][1] = clamped(length - 2);
@@ -454,14 +456,14 @@ constexpr size_t kMaxNeighboursLooked = 32;
 // orders by how well a vertex can be predicted. Returns child lists of
 // input vertices, in coding order.
 std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>& grid, const NeighbourGraph& graph,
-                                                     int cellBits, bool flagChoices) {
+                                                     int cellBits, bool flagChoices, bool frame) {
     const size_t n = grid.size() / 3;
     std::vector<std::vector<uint32_t>> children(n);
     std::vector<uint8_t> done(n, 0);
     // Per vertex, where its undecoded neighbours begin: a vertex decoded
     // stays decoded, so the cursor only moves on.
     std::vector<uint32_t> cursor(graph.offset.begin(), graph.offset.end() - 1);  // offset has n + 1 entries
-    CodingState s(cellBits, kFileFormatVersion, flagChoices);
+    CodingState s(cellBits, kFileFormatVersion, flagChoices, frame);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
@@ -520,13 +522,14 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
 // residual) with its child count.
 std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int cellBits,
                               const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order,
-                              bool flagChoices, uint64_t& framedResiduals) {
+                              bool flagChoices, bool frame, uint64_t& framedResiduals) {
     const size_t n = order.size();
     RangeEncoder coder;
     Writer io{coder};
     coder.encodeBits(uint32_t(cellBits), kCellBitsWidth);
     coder.encodeBits(flagChoices ? 1 : 0, 1);
-    CodingState s(cellBits, kFileFormatVersion, flagChoices);
+    coder.encodeBits(frame ? 1 : 0, 1);  // G, from format 3
+    CodingState s(cellBits, kFileFormatVersion, flagChoices, frame);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
@@ -562,14 +565,14 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
 // dinosaur-24k 14.05 -> 13.67), and on some artist meshes (hero 21.29 ->
 // 20.91).
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
-                                    GeometryTree which, ChoiceCoding choices) {
+                                    GeometryTree which, ChoiceCoding choices, FrameUse frames) {
     const NearestNeighbours nearest = nearestNeighbours(grid, index, kNeighbours);
     const int cellBits = cellBitsFor(nearest.spacing, bits);
     GeometryEncoding best;
-    auto keepSmaller = [&](const std::vector<std::vector<uint32_t>>& children, bool flagChoices) {
+    auto keepSmaller = [&](const std::vector<std::vector<uint32_t>>& children, bool flagChoices, bool frame) {
         std::vector<uint32_t> order = preorder(children);
         uint64_t framed = 0;
-        std::vector<uint8_t> bytes = codeTree(grid, bits, cellBits, children, order, flagChoices, framed);
+        std::vector<uint8_t> bytes = codeTree(grid, bits, cellBits, children, order, flagChoices, frame, framed);
         if (best.bytes.empty() || bytes.size() < best.bytes.size()) best = {std::move(bytes), std::move(order), framed};
     };
     NeighbourGraph graph;
@@ -577,16 +580,20 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     for (ChoiceCoding coding : {ChoiceCoding::Flags, ChoiceCoding::Symbol}) {
         if (choices != ChoiceCoding::Smaller && choices != coding) continue;
         const bool flagChoices = coding == ChoiceCoding::Flags;
-        if (which != GeometryTree::SpanningTree) {  // grown under the coding it is written with
-            if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
-            keepSmaller(cheapestFirstTree(grid, graph, cellBits, flagChoices), flagChoices);
-        }
-        if (which != GeometryTree::CheapestFirst) {
-            if (spanning.empty()) {
-                spanning = spanningForest(grid, nearest);
-                orderChildrenForPrediction(grid, spanning);
+        for (FrameUse use : {FrameUse::On, FrameUse::Off}) {
+            if (frames != FrameUse::Smaller && frames != use) continue;
+            const bool frame = use == FrameUse::On;
+            if (which != GeometryTree::SpanningTree) {  // grown under the coding it is written with
+                if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
+                keepSmaller(cheapestFirstTree(grid, graph, cellBits, flagChoices, frame), flagChoices, frame);
             }
-            keepSmaller(spanning, flagChoices);
+            if (which != GeometryTree::CheapestFirst) {
+                if (spanning.empty()) {
+                    spanning = spanningForest(grid, nearest);
+                    orderChildrenForPrediction(grid, spanning);
+                }
+                keepSmaller(spanning, flagChoices, frame);
+            }
         }
     }
     return best;
@@ -610,11 +617,12 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     Reader io{coder};
     const int cellBits = int(coder.decodeBits(kCellBitsWidth));
     const bool flagChoices = formatVersion >= 2 && coder.decodeBits(1) == 1;
+    const bool frame = formatVersion >= 3 && coder.decodeBits(1) == 1;
     if (cellBits > bits) throw Error(ErrorKind::Corrupt, "corrupt file: the geometry section's cell size is larger than the grid");
     // The count is only a claim until the stream delivers the vertices:
     // tables grow as they are decoded, so a short or garbage section fails
     // before memory is committed to it.
-    CodingState s(cellBits, formatVersion, flagChoices);
+    CodingState s(cellBits, formatVersion, flagChoices, frame);
     const size_t initial = std::min<size_t>(n, size_t(1) << 16);
     s.pos.reserve(initial);
     s.parentOf.reserve(initial);

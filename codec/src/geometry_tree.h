@@ -28,11 +28,15 @@ enum class GeometryTree { Smaller, CheapestFirst, SpanningTree };
 // How the section names each vertex's predictor (format 2): one flag per
 // candidate, or one symbol over all; by default both are tried.
 enum class ChoiceCoding { Smaller, Flags, Symbol };
+// Whether the section may code residuals from the parent in its local
+// frame (format 3's bit G); by default both are tried.
+enum class FrameUse { Smaller, On, Off };
 
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     NeighbourIndex index = NeighbourIndex::Auto,
                                     GeometryTree tree = GeometryTree::Smaller,
-                                    ChoiceCoding choices = ChoiceCoding::Smaller);
+                                    ChoiceCoding choices = ChoiceCoding::Smaller,
+                                    FrameUse frames = FrameUse::Smaller);
 
 // Reads a section in the syntax of format version 1, 2 or 3 (docs/format.md;
 // the encoder writes kFileFormatVersion's). Throws Error on data that does

@@ -115,10 +115,22 @@ TEST(GeometryTree, TheLocalFrameCodesSomeResidualsFromTheParent) {
     for (const char* name : {"bunny-lres.ply", "elephant-with-holes.ply"}) {
         SCOPED_TRACE(name);
         const std::vector<int32_t> grid = gridOf(name, 12);
-        const GeometryEncoding encoded = encodeGeometryTree(grid, 12);
+        const GeometryEncoding encoded =
+            encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::On);
         EXPECT_GT(encoded.framedResiduals, grid.size() / 3 / 50);  // bunny-lres: over 1 in 20; elephant: 68 of 2798
         EXPECT_LT(encoded.framedResiduals, grid.size() / 3);
         expectRoundTrip(grid, 12);
+        // Without it (the section's bit G = 0): none, and the encoder keeps
+        // whichever section is smaller.
+        const GeometryEncoding without =
+            encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::Off);
+        EXPECT_EQ(without.framedResiduals, 0u);
+        EXPECT_EQ(encodeGeometryTree(grid, 12).bytes.size(), std::min(encoded.bytes.size(), without.bytes.size()));
+        const size_t n = grid.size() / 3;
+        std::vector<int32_t> expected(grid.size());
+        for (size_t d = 0; d < n; ++d)
+            for (int k = 0; k < 3; ++k) expected[3 * d + k] = grid[3 * size_t(without.order[d]) + k];
+        EXPECT_EQ(decodeGeometryTree(without.bytes.data(), without.bytes.size(), n, 12, kFileFormatVersion), expected);
     }
 }
 
