@@ -1,9 +1,11 @@
 // Small helpers every part of the codec uses, written once: the "none"
-// index (and its name for vertices), bit lengths, integer grid points and their squared distances, and
+// index (and its name for vertices), bit lengths, integer square roots, integer grid points and their
+// squared distances, and
 // a union-find.
 #ifndef DRM_COMMON_H
 #define DRM_COMMON_H
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
@@ -28,6 +30,16 @@ constexpr uint32_t kNotPresent = kNoIndex;
 
 // The number of bits needed to write m: 0 for 0, 1 for 1, 3 for 5.
 inline int bitLength(uint64_t m) { return m == 0 ? 0 : 64 - __builtin_clzll(m); }
+
+// floor(sqrt(v)), exactly on every machine (the double is only a first
+// guess), for v below 2^62 (squared distances of 21-bit coordinates are
+// below 2^45).
+inline uint64_t integerSqrt(uint64_t v) {
+    uint64_t r = uint64_t(std::sqrt(double(v)));
+    while (r > 0 && r * r > v) --r;
+    while ((r + 1) * (r + 1) <= v) ++r;
+    return r;
+}
 
 // A point of the quantization grid (or a difference of two).
 struct GridPoint {

@@ -67,10 +67,6 @@ struct Predictions {
     }
 };
 
-// floor(sqrt(v)), exactly on every machine, for v below 2^62 (squared
-// distances of 21-bit coordinates: below 2^45).
-uint32_t integerSqrt(uint64_t v) { return uint32_t(LocalFrame::isqrt(v)); }
-
 // Format 2 can name the predictor (when the section's bit F is 1) with a
 // yes/no flag per candidate, in index order, each in a context of what the
 // decoder can see about it:
@@ -231,10 +227,10 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j)
             if (i != j) p.add(at + (near[i] - near[j]));
-    if (s.choiceFlags || s.spacingContexts) {
+    if (s.choiceFlags || s.spacingContexts) p.spacing2 = m > 0 ? distance2(at, near[m - 1]) : 0;
+    if (s.choiceFlags) {  // the flags' contexts
         p.known[p.knownCount++] = at;
         for (int i = 0; i < m; ++i) p.known[p.knownCount++] = near[i];
-        p.spacing2 = m > 0 ? distance2(at, near[m - 1]) : 0;
         p.crowdRadius = int32_t(integerSqrt(uint64_t(p.spacing2)) / 5);
     }
     if (s.framedParent) p.frame = surfaceFrame(at, near, m);
@@ -384,9 +380,9 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     if (Io::kEncoding && inFrame) r = toFrame(p.frame, r);
     int64_t out[3];
     const int32_t in[3] = {r.x, r.y, r.z};
-    AxisModels* models = s.axis[residualGroup(s.version2, choice)];
+    const int group = residualGroup(s.version2, choice);
     for (int a = 0; a < 3; ++a) {
-        const int32_t coded = codeResidual(io, models[a], contexts[residualGroup(s.version2, choice)][a], in[a]);
+        const int32_t coded = codeResidual(io, s.axis[group][a], contexts[group][a], in[a]);
         s.magnitude[3 * size_t(self) + size_t(a)] = magnitudeOf(coded);
         out[a] = coded;
     }

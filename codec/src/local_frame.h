@@ -13,7 +13,6 @@
 #ifndef DRM_LOCAL_FRAME_H
 #define DRM_LOCAL_FRAME_H
 
-#include <cmath>
 #include <cstdint>
 
 #include "common.h"
@@ -47,7 +46,7 @@ public:
         // the plane of the third and first axes: (nz, |(nx, ny)|) onto the
         // third.
         azimuth_ = PlaneRotation(nx, ny);
-        polar_ = PlaneRotation(nz, int64_t(isqrt(uint64_t(nx * nx + ny * ny))));
+        polar_ = PlaneRotation(nz, int64_t(integerSqrt(uint64_t(nx * nx + ny * ny))));
     }
 
     // World -> frame, and back. Vector components must stay below 2^40 in
@@ -60,10 +59,6 @@ public:
         polar_.inverse(v[2], v[0]);
         azimuth_.inverse(v[0], v[1]);
     }
-
-    // floor(sqrt(v)), exactly (the double is only a first guess), for v
-    // below 2^62 (the callers' squares stay below 2^46).
-    static uint64_t isqrt(uint64_t v);
 
 private:
     static constexpr int64_t kNormalLimit = int64_t(1) << 20;
@@ -94,7 +89,7 @@ private:
                 du = -du;
                 dv = -dv;
             }
-            const int64_t length = int64_t(isqrt(uint64_t(du * du + dv * dv)));
+            const int64_t length = int64_t(integerSqrt(uint64_t(du * du + dv * dv)));
             if (dv == 0 || length == 0) return;  // already on the axis
             // Rotating by -theta, where (du, dv) = length (cos theta, sin theta):
             // a = tan(theta / 2) = dv / (length + du), b = -sin(theta).
@@ -125,12 +120,6 @@ private:
     PlaneRotation azimuth_, polar_;
 };
 
-inline uint64_t LocalFrame::isqrt(uint64_t v) {
-    uint64_t r = uint64_t(std::sqrt(double(v)));
-    while (r > 0 && r * r > v) --r;
-    while ((r + 1) * (r + 1) <= v) ++r;
-    return r;
-}
 
 }  // namespace drm
 

@@ -103,9 +103,9 @@ TEST(LocalFrame, AxisNormalsAndNoNormalLeaveTheGridAlone) {
 
 TEST(LocalFrame, IntegerSquareRootIsExact) {
     for (uint64_t r : {uint64_t(0), uint64_t(1), uint64_t(2), uint64_t(3037000499), uint64_t(1) << 31}) {
-        EXPECT_EQ(LocalFrame::isqrt(r * r), r);
-        if (r > 0) EXPECT_EQ(LocalFrame::isqrt(r * r - 1), r - 1);
-        EXPECT_EQ(LocalFrame::isqrt(r * r + 1), r == 0 ? 1u : r);
+        EXPECT_EQ(integerSqrt(r * r), r);
+        if (r > 0) EXPECT_EQ(integerSqrt(r * r - 1), r - 1);
+        EXPECT_EQ(integerSqrt(r * r + 1), r == 0 ? 1u : r);
     }
 }
 
