@@ -91,7 +91,7 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
         makeSpatialIndex(result.quantized, options.index, IndexRole::Traversal);
     Traversal traversal(d.traversalVertices, expectedFaces, candidates.get());
     EdgeModel model(result.quantized, header.grid.bits - d.vertices.lowBits, header.predictor, header.curvature,
-                    header.levers, faceCount, *candidates, traversal);
+                    header.levers, faceCount, *candidates, traversal, d.parts.formatVersion);
     RankDecoder coder(d.parts.connectivity, d.parts.connectivitySize, model.contextCount());
     std::vector<uint64_t>& histogram = result.stats.rankHistogram;
 

@@ -60,11 +60,12 @@ double cosineSubtended(Vec3 a, Vec3 b, Vec3 v) {
 
 EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature,
                      const Levers& levers, uint64_t faceCount, const SpatialIndex& candidates,
-                     const Traversal& traversal)
+                     const Traversal& traversal, int formatVersion)
     : grid_(grid),
       bits_(bits),
       levers_(levers),
       fineBuckets_(faceCount >= kFineBucketsFromFaces),
+      ballCandidates_(formatVersion >= 4),
       admissible_(traversal, levers.topologicalFilter),
       predictor_(predictor, curvature, grid, candidates, admissible_),
       ranks_(grid, candidates, admissible_) {}
@@ -80,13 +81,13 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     disagreement_ = Disagreement();  // only an edge where the orders disagree teaches resolved()
     if (f.preferred != kNoVertex) {
         if (levers_.confidenceContext) {
-            const std::vector<RankedVertex>& first = ranks_.nearest(f.prediction, 1, edge);
+            const std::vector<RankedVertex>& first = nearestCandidates(f.prediction, 1, edge);
             f.context = kGapContext + (!first.empty() && first[0].second == f.preferred ? 0 : 1);
         }
         return f;
     }
     if (!levers_.confidenceContext && !levers_.angleOrder) return f;
-    f.nearest = ranks_.nearest(f.prediction, levers_.angleOrder ? kAngleOrdered : 2, edge);
+    f.nearest = nearestCandidates(f.prediction, levers_.angleOrder ? kAngleOrdered : 2, edge);
     if (levers_.confidenceContext) f.context = confidenceBucket(f.nearest, fineBuckets_);
     if (levers_.angleOrder && f.nearest.size() >= 2) {
         const uint32_t nearestByDistance = f.nearest[0].second;
@@ -104,6 +105,12 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
         }
     }
     return f;
+}
+
+const std::vector<RankedVertex>& EdgeModel::nearestCandidates(const FixedPoint& p, size_t count, const OpenEdge& edge) {
+    if (ballCandidates_ && predictor_.searchedBall())
+        return ranks_.nearestAmong(p, count, edge, [&](auto offer) { predictor_.forEachInBall(offer); });
+    return ranks_.nearest(p, count, edge);
 }
 
 void EdgeModel::orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& nearest) const {
@@ -137,16 +144,16 @@ void EdgeModel::resolved(uint32_t apex) {
 
 // The nearest candidates, when the forecast holds them, take the first ranks
 // in the forecast's order; every other vertex is ranked by distance after
-// them (all of them are nearer than it, so the counts agree).
+// them.
 uint32_t EdgeModel::rankOf(uint32_t apex, const OpenEdge& edge) {
     for (size_t k = 0; k < forecast_.nearest.size(); ++k)
         if (forecast_.nearest[k].second == apex) return uint32_t(k + 1);
-    return ranks_.rankOf(forecast_.prediction, apex, edge, forecast_.preferred);
+    return ranks_.rankOf(forecast_.prediction, apex, edge, forecast_.preferred, forecast_.nearest);
 }
 
 uint32_t EdgeModel::vertexOfRank(uint32_t rank, const OpenEdge& edge) {
     if (rank >= 1 && rank <= forecast_.nearest.size()) return forecast_.nearest[rank - 1].second;
-    return ranks_.vertexOfRank(forecast_.prediction, rank, edge, forecast_.preferred);
+    return ranks_.vertexOfRank(forecast_.prediction, rank, edge, forecast_.preferred, forecast_.nearest);
 }
 
 }  // namespace drm

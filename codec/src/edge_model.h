@@ -27,8 +27,11 @@ class EdgeModel {
 public:
     // faceCount sets how finely the coder contexts split (small meshes
     // cannot teach many contexts).
+    // formatVersion: the file's (from 4 on, the nearest candidates come
+    // from the predictor's ball; docs/format.md, "Format 4").
     EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature, const Levers& levers,
-              uint64_t faceCount, const SpatialIndex& candidates, const Traversal& traversal);
+              uint64_t faceCount, const SpatialIndex& candidates, const Traversal& traversal,
+              int formatVersion = kFileFormatVersion);
 
     // How many coder contexts forecasts use (for the rank coder).
     int contextCount() const;
@@ -46,11 +49,15 @@ public:
 
 private:
     void orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& nearest) const;
+    // The `count` admissible vertices nearest p: from the predictor's ball
+    // (format 4), or from a search of their own.
+    const std::vector<RankedVertex>& nearestCandidates(const FixedPoint& p, size_t count, const OpenEdge& edge);
 
     const std::vector<int32_t>& grid_;
     int bits_;
     Levers levers_;
     bool fineBuckets_;
+    bool ballCandidates_;
     Admissibility admissible_;
     ApexPredictor predictor_;
     RankSearch ranks_;

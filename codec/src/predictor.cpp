@@ -39,6 +39,7 @@ ApexPredictor::ApexPredictor(Predictor kind, bool curvature, const std::vector<i
       tuning_(tuning) {}
 
 Vec3 ApexPredictor::predict(const OpenEdge& edge) {
+    searchedBall_ = false;
     const Vec3 a = gridPoint(grid_, edge.vi), b = gridPoint(grid_, edge.vj);
     Vec3 p = baseApex(kind_, a, b, gridPoint(grid_, edge.opposite));
     if (norm2(b - a) == 0) return p;  // coincident ends: no edge frame to correct in
@@ -90,8 +91,10 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     const double halfSlab = edgeLength * (0.5 + tuning_.slabWidening);
 
     double radius = 2.0 * std::max(height, edgeLength);
+    searchedBall_ = true;
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
         candidates_.collectNearWithPoints(mid, radius, nearby_, nearbyPoints_);
+        inBall_.clear();
         double firstHeight = 0;
         uint32_t first = 0;
         bool found = false;
@@ -100,6 +103,7 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
             const int32_t* at = nearbyPoints_.data() + 3 * i;  // gridPoint(grid_, v)
             const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - mid;
             if (norm2(x) > radius * radius) continue;
+            inBall_.push_back(uint32_t(i));
             const double h = dot(x, ahead);
             if (h <= 0) continue;
             const double along = dot(x, e) / edgeLength;

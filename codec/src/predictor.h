@@ -46,6 +46,16 @@ public:
     // The predicted apex of the triangle across edge, in grid units.
     Vec3 predict(const OpenEdge& edge);
 
+    // Whether the last predict() searched a ball for the first vertex
+    // ahead (not when the edge or the prediction's height is zero), and
+    // then calls visit(v, point) for every present vertex in that ball,
+    // admissible or not (point: its grid x, y, z).
+    bool searchedBall() const { return searchedBall_; }
+    template <class Visit>
+    void forEachInBall(Visit visit) const {
+        for (uint32_t i : inBall_) visit(nearby_[i], nearbyPoints_.data() + 3 * size_t(i));
+    }
+
 private:
     Vec3 bendOntoSurface(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
     Vec3 scaleToFirstVertexAhead(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
@@ -58,6 +68,8 @@ private:
     PredictorTuning tuning_;
     std::vector<uint32_t> nearby_;  // scratch, reused by every query
     std::vector<int32_t> nearbyPoints_;  // their coordinates, 3 per vertex
+    bool searchedBall_ = false;
+    std::vector<uint32_t> inBall_;  // positions in nearby_ of the last search's vertices within its ball
 };
 
 }  // namespace drm

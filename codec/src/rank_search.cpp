@@ -35,33 +35,50 @@ RankSearch::RankSearch(const std::vector<int32_t>& grid, const SpatialIndex& can
 
 int64_t RankSearch::distance2(const FixedPoint& p, uint32_t v) const { return fixedDistance2(grid_, p, v); }
 
-uint32_t RankSearch::rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred) {
+namespace {
+
+bool isListed(uint32_t v, const std::vector<RankedVertex>& listed) {
+    for (const RankedVertex& l : listed)
+        if (l.second == v) return true;
+    return false;
+}
+
+}  // namespace
+
+uint32_t RankSearch::rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred,
+                            const std::vector<RankedVertex>& listed) {
     if (apex == preferred) return 1;
     const int64_t apexDistance = distance2(p, apex);
     index_.collectNear(toGridUnits(p), std::sqrt(double(apexDistance)) / kSubUnits, nearby_);
-    uint32_t closer = preferred == kNoVertex ? 0 : 1;
+    uint32_t closer = uint32_t(listed.size()) + (preferred == kNoVertex ? 0 : 1);
     for (uint32_t v : nearby_) {
         if (v == apex || v == preferred) continue;
         const int64_t d = distance2(p, v);
-        if ((d < apexDistance || (d == apexDistance && v < apex)) && admissible_(v, edge)) ++closer;
+        if ((d < apexDistance || (d == apexDistance && v < apex)) && !isListed(v, listed) && admissible_(v, edge))
+            ++closer;
     }
     return closer + 1;
 }
 
-uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const OpenEdge& edge, uint32_t preferred) {
+uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const OpenEdge& edge, uint32_t preferred,
+                                  const std::vector<RankedVertex>& listed) {
     if (preferred != kNoVertex) {
         if (rank == 1) return preferred;
         --rank;
     }
-    if (rank == 0 || rank > index_.presentCount())
-        throw Error(ErrorKind::Corrupt, "rank " + std::to_string(rank) + " is impossible: only " +
+    if (rank <= listed.size())  // callers look the listed ranks up themselves
+        throw Error(ErrorKind::Internal, "vertexOfRank asked for listed rank " + std::to_string(rank));
+    rank -= uint32_t(listed.size());
+    if (rank > index_.presentCount())
+        throw Error(ErrorKind::Corrupt, "rank " + std::to_string(rank + listed.size()) + " is impossible: only " +
                     std::to_string(index_.presentCount()) + " candidate vertices remain");
-    const std::vector<RankedVertex>& order = nearest(p, rank, edge, preferred);
-    if (order.size() < rank)
-        throw Error(ErrorKind::Corrupt, "rank " + std::to_string(rank) + " is impossible: only " + std::to_string(order.size()) +
-                    " admissible vertices remain for edge " + std::to_string(edge.vi) + "-" +
-                    std::to_string(edge.vj));
-    return order[rank - 1].second;
+    index_.nearest(
+        p, rank, [&](uint32_t v) { return v != preferred && !isListed(v, listed) && admissible_(v, edge); }, ranked_);
+    if (ranked_.size() < rank)
+        throw Error(ErrorKind::Corrupt, "rank " + std::to_string(rank + listed.size()) + " is impossible: only " +
+                    std::to_string(ranked_.size() + listed.size()) + " admissible vertices remain for edge " +
+                    std::to_string(edge.vi) + "-" + std::to_string(edge.vj));
+    return ranked_[rank - 1].second;
 }
 
 // The index finds them exactly (ties ordered by index), whichever it is.

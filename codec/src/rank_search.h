@@ -9,6 +9,7 @@
 #ifndef DRM_RANK_SEARCH_H
 #define DRM_RANK_SEARCH_H
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -28,18 +29,43 @@ public:
     RankSearch(const std::vector<int32_t>& grid, const SpatialIndex& candidates,
                const Admissibility& admissible);
 
-    // Encoder: the rank of apex (>= 1).
-    uint32_t rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred = kNoVertex);
+    // Ranks come in two parts: `listed` vertices first, in the caller's
+    // order (the forecast's nearest candidates), then every other
+    // admissible vertex by distance. With a `preferred` vertex (gap
+    // closing) it alone is listed. The listed vertices need not be the
+    // nearest ones: counts skip them, wherever they lie.
 
-    // Decoder: the vertex of the given rank (>= 1). Throws Error if there
-    // are fewer admissible vertices.
-    uint32_t vertexOfRank(const FixedPoint& p, uint32_t rank, const OpenEdge& edge,
-                          uint32_t preferred = kNoVertex);
+    // Encoder: the rank of apex (>= 1), apex not among `listed`.
+    uint32_t rankOf(const FixedPoint& p, uint32_t apex, const OpenEdge& edge, uint32_t preferred = kNoVertex,
+                    const std::vector<RankedVertex>& listed = {});
+
+    // Decoder: the vertex of the given rank (> listed.size()). Throws Error
+    // if there are fewer admissible vertices.
+    uint32_t vertexOfRank(const FixedPoint& p, uint32_t rank, const OpenEdge& edge, uint32_t preferred = kNoVertex,
+                          const std::vector<RankedVertex>& listed = {});
 
     // The `count` admissible vertices nearest p other than `skip`, nearest
     // first; fewer if fewer exist.
     const std::vector<RankedVertex>& nearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
                                              uint32_t skip = kNoVertex);
+    // The same among the vertices some other search has found (the ball
+    // the predictor searched, which holds most answers): calls
+    // forEachCandidate(offer), which calls offer(v, point) for each
+    // (point: v's grid x, y, z).
+    template <class ForEach>
+    const std::vector<RankedVertex>& nearestAmong(const FixedPoint& p, size_t count, const OpenEdge& edge,
+                                                  ForEach forEachCandidate) {
+        ranked_.clear();
+        if (count == 0) return ranked_;
+        forEachCandidate([&](uint32_t v, const int32_t* point) {
+            const RankedVertex c{fixedDistance2(point, p), v};
+            if (ranked_.size() == count && !(c < ranked_.back())) return;
+            if (!admissible_(v, edge)) return;  // edge look-ups: only for vertices that would enter
+            ranked_.insert(std::upper_bound(ranked_.begin(), ranked_.end(), c), c);
+            if (ranked_.size() > count) ranked_.pop_back();
+        });
+        return ranked_;
+    }
 
     int64_t distance2(const FixedPoint& p, uint32_t v) const;
 

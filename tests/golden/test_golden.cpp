@@ -3,7 +3,8 @@
 // fails here; an intended one regenerates them (regenerate.sh). The files
 // of each older format version the library still reads stay, frozen, in a
 // folder of their own (v1/: written before the vertex coder's format 2;
-// v2/: before format 3's local frame), so the decoder keeps reading what
+// v2/: before format 3's local frame; v3/: before format 4's nearest
+// candidates from the predictor's ball), so the decoder keeps reading what
 // users already have.
 #include <gtest/gtest.h>
 
@@ -47,5 +48,12 @@ TEST(GoldenFormat2, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefer
 TEST(GoldenFormat2, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v2", 2); }
 TEST(GoldenFormat2, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v2", 2); }
 TEST(GoldenFormat2, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v2", 2); }
+
+// Format 3's files, as its last encoder (36ac087) wrote them.
+TEST(GoldenFormat3, Torus) { expectDecodesToGolden("torus", "/v3", 3); }
+TEST(GoldenFormat3, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v3", 3); }
+TEST(GoldenFormat3, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v3", 3); }
+TEST(GoldenFormat3, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v3", 3); }
+TEST(GoldenFormat3, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v3", 3); }
 
 }  // namespace

@@ -87,6 +87,71 @@ TEST(RankSearch, MatchesBruteForceWithManyTies) {
   }
 }
 
+// Format 4 lists the nearest candidates found in the predictor's ball,
+// which need not be the nearest overall: listed vertices take the first
+// ranks in the listed order, every other one follows by distance, counted
+// without the listed ones wherever they lie.
+TEST(RankSearch, ListedVerticesNeedNotBeTheNearest) {
+  for (NeighbourIndex kind : kIndexes) {
+    std::mt19937 rng(99);
+    const int bits = 12;
+    for (int trial = 0; trial < 10; ++trial) {
+        Scene s = randomScene(rng, 300, 20, kind);
+        SCOPED_TRACE(s.index->name());
+        RankSearch search(s.grid, *s.index, *s.admissible);
+        std::uniform_real_distribution<double> at(-2.0, 22.0);
+        for (int q = 0; q < 20; ++q) {
+            OpenEdge edge{uint32_t(rng() % 300), uint32_t(rng() % 300), 0};
+            if (edge.vi == edge.vj) continue;
+            const Vec3 p{at(rng), at(rng), at(rng)};
+            const std::vector<uint32_t> order = bruteForceOrder(s, search, p, edge, bits);
+            const FixedPoint fp = snapPrediction(p, bits);
+            // Two far vertices and one near one, in that order.
+            const std::vector<RankedVertex> listed = {{0, order[order.size() - 1]}, {0, order[order.size() / 2]}, {0, order[1]}};
+            std::vector<uint32_t> expected;
+            for (const RankedVertex& l : listed) expected.push_back(l.second);
+            for (uint32_t v : order)
+                if (std::find(expected.begin(), expected.end(), v) == expected.end()) expected.push_back(v);
+            for (size_t k = listed.size(); k < expected.size(); k += 1 + k / 10) {
+                ASSERT_EQ(search.rankOf(fp, expected[k], edge, kNoVertex, listed), k + 1) << "query " << q;
+                ASSERT_EQ(search.vertexOfRank(fp, uint32_t(k + 1), edge, kNoVertex, listed), expected[k]);
+            }
+            EXPECT_THROW(search.vertexOfRank(fp, uint32_t(expected.size() + 1), edge, kNoVertex, listed), Error);
+        }
+    }
+  }
+}
+
+// Among a given set, the nearest are those of the set by the same exact
+// order; with every present vertex offered, they are the searched ones.
+TEST(RankSearch, NearestAmongOfferedVertices) {
+  for (NeighbourIndex kind : kIndexes) {
+    std::mt19937 rng(5);
+    Scene s = randomScene(rng, 200, 9, kind);  // many ties
+    SCOPED_TRACE(s.index->name());
+    RankSearch search(s.grid, *s.index, *s.admissible);
+    std::uniform_real_distribution<double> at(-1.0, 10.0);
+    for (int q = 0; q < 50; ++q) {
+        const OpenEdge edge{uint32_t(q), uint32_t(q + 1), 0};
+        const FixedPoint fp = snapPrediction(Vec3{at(rng), at(rng), at(rng)}, 12);
+        auto offerAll = [&](auto offer) {
+            for (uint32_t v = 200; v-- > 0;) offer(v, s.grid.data() + 3 * size_t(v));
+        };
+        const std::vector<RankedVertex> among = search.nearestAmong(fp, 4, edge, offerAll);
+        EXPECT_EQ(among, search.nearest(fp, 4, edge));
+        auto offerEven = [&](auto offer) {
+            for (uint32_t v = 0; v < 200; v += 2) offer(v, s.grid.data() + 3 * size_t(v));
+        };
+        std::vector<RankedVertex> even;
+        for (uint32_t v = 0; v < 200; v += 2)
+            if (v != edge.vi && v != edge.vj) even.emplace_back(search.distance2(fp, v), v);
+        std::sort(even.begin(), even.end());
+        even.resize(4);
+        EXPECT_EQ(search.nearestAmong(fp, 4, edge, offerEven), even);
+    }
+  }
+}
+
 TEST(RankSearch, FarPredictionsAndLargeGrids) {
   for (NeighbourIndex kind : kIndexes) {
     std::mt19937 rng(7);

@@ -75,9 +75,9 @@ constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
-constexpr int kFileFormatVersion = 3;
+constexpr int kFileFormatVersion = 4;
 constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 3;
+constexpr int kNewestReadableFormatVersion = 4;
 
 // The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
 // MeshLab rank filter, README's legend): bucket 0 is a component's start
