@@ -125,9 +125,14 @@ void EdgeModel::orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& ne
         keyed[k] = {cosineSubtended(a, b, v) + (behind ? 4.0 : 0.0), nearest[k]};
     }
     // Ahead before behind, then largest angle (smallest cosine) first; equal
-    // keys keep distance order.
-    std::stable_sort(keyed, keyed + count, [](const std::pair<double, RankedVertex>& x,
-                                               const std::pair<double, RankedVertex>& y) { return x.first < y.first; });
+    // keys keep distance order. An insertion sort, stable, of at most four:
+    // std::stable_sort asked for a temporary buffer on every edge.
+    for (size_t k = 1; k < count; ++k) {
+        const std::pair<double, RankedVertex> moving = keyed[k];
+        size_t at = k;
+        for (; at > 0 && moving.first < keyed[at - 1].first; --at) keyed[at] = keyed[at - 1];
+        keyed[at] = moving;
+    }
     for (size_t k = 0; k < count; ++k) nearest[k] = keyed[k].second;
 }
 
