@@ -45,6 +45,9 @@ struct PreparedMesh {
     Mesh renumbered;
     MeshTopology topology;            // of renumbered
     Predictor predictor = Predictor::Midpoint;
+    // The faces renumbered: the cut's, or the input's own when it needed no
+    // cut (not copied: 12 bytes a face).
+    const std::vector<uint32_t>* triangles = nullptr;
     size_t inputFaces = 0;
     std::vector<uint32_t> inputFace;  // face of renumbered -> input face
     // Decoded vertex indices; flipped and duplicateOf per face of renumbered
@@ -160,8 +163,9 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     const std::vector<uint8_t>& geometry = geometryCoder.encodeAfterConnectivity ? secondPass : prepared.geometry;
     FileParts written;
     result.bytes = writeFile(header, connectivity, geometry, vertexOrder, repairs, {}, &written);
-    // The faces as the decoder will give them back.
-    attempt.decodedTriangles = traversal.triangles();
+    // The faces as the decoder will give them back (the traversal's own:
+    // it is done, and a copy would cost 12 bytes a face at the peak).
+    attempt.decodedTriangles = traversal.takeTriangles();
     if (prepared.repaired) {
         Repairs inDecodedOrder = prepared.repairs;
         for (size_t i = 0; i < faceCount; ++i) inDecodedOrder.flipped[i] = prepared.repairs.flipped[decodedFaceOrder[i]];
@@ -240,8 +244,9 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
     prepared.repairs.looseTriangles.resize(cut.looseTriangles.size());
     for (size_t c = 0; c < cut.looseTriangles.size(); ++c)
         prepared.repairs.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
-    prepared.renumbered.triangles.resize(cut.triangles.size());
-    for (size_t c = 0; c < cut.triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[cut.triangles[c]];
+    const std::vector<uint32_t>& triangles = *prepared.triangles;
+    prepared.renumbered.triangles.resize(triangles.size());
+    for (size_t c = 0; c < triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[triangles[c]];
     prepared.renumbered.positions.resize(prepared.decodedGrid.size());  // only its size matters to the checks
     {
         checkIndices(prepared.renumbered);
@@ -253,7 +258,8 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
     prepared.predictor = options.predictor;
     if (prepared.predictor == Predictor::Auto) {
         progress.stage("choosing predictor", 0.04);
-        prepared.predictor = countPredictorVotes(prepared.renumbered, prepared.topology, prepared.decodedGrid).winner();
+        prepared.predictor = countPredictorVotes(prepared.renumbered.triangles, prepared.renumbered.vertexCount(),
+                                                  prepared.topology, prepared.decodedGrid).winner();
     }
     Attempt best = encodeOnce(prepared.renumbered, prepared, options, progress);
     const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
@@ -347,13 +353,19 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // A mesh the traversal can take as it is needs no cut (the common case,
     // and the cheap test); any other is cut into manifold pieces.
     ManifoldCut cut;
-    MeshTopology asGiven;
-    const bool needsCut = !topologyProblem(mesh, &asGiven).empty();
+    bool needsCut = false;
+    {
+        // Its edge table answers only this question: freed before the
+        // attempts build their own (144 bytes a vertex on igea).
+        MeshTopology asGiven;
+        needsCut = !topologyProblem(mesh, &asGiven).empty();
+    }
+    // The attempts renumber the input's own faces when they need no cut.
+    prepared.triangles = needsCut ? &cut.triangles : &mesh.triangles;
     if (needsCut) {
         progress.stage("cutting into manifold pieces", 0.005);
         cut = cutIntoManifold(mesh.triangles, mesh.vertexCount());
     } else {
-        cut.triangles = mesh.triangles;
         cut.inputFace.resize(mesh.faceCount());
         for (size_t f = 0; f < cut.inputFace.size(); ++f) cut.inputFace[f] = uint32_t(f);
         cut.flipped.assign(mesh.faceCount(), 0);
