@@ -26,72 +26,87 @@ namespace {
 
 constexpr size_t kTryWithoutLeversBelowFaces = 20000;
 
-// What every encoding of one mesh shares: the grid, the geometry section,
-// the mesh renumbered into the decoded vertex order, its topology and the
-// predictor. Connectivity is coded over the renumbered mesh, because ties
-// between equal distances are broken by the indices the decoder will see.
+// What every attempt at one mesh shares, and only reads: the grid, the
+// quantized input and the input cut into manifold pieces.
 struct PreparedMesh {
     Grid grid;
     std::vector<int32_t> quantized;   // input order
+    // The faces the traversal codes, over input indices: the cut's, or the
+    // input's own when it needed no cut (not copied: 12 bytes a face).
+    const std::vector<uint32_t>* triangles = nullptr;
+    size_t inputFaces = 0;
+    std::vector<uint32_t> inputFace;  // face of triangles -> input face
+    // flipped and duplicateOf per face of triangles, and duplicateReversed;
+    // each attempt has its own copies and faces repeating a vertex, in its
+    // decoded indices (encodeOnce joins them, in decoded face order).
+    Repairs repairs;
+    bool repaired = false;
+};
+
+// One attempt's numbering: the geometry section, the decoded vertex order it
+// gives and the faces renumbered into it, with their topology and the
+// predictor. Connectivity is coded over the renumbered faces, because ties
+// between equal distances are broken by the indices the decoder will see.
+// Never copied or moved: topology points into triangles.
+struct NumberedMesh {
+    NumberedMesh() = default;
+    NumberedMesh(const NumberedMesh&) = delete;
+    NumberedMesh& operator=(const NumberedMesh&) = delete;
+
     GeometryCoder geometryCoder = GeometryCoder::SpanningTree;
     std::vector<uint8_t> geometry;    // the geometry section (Refine: the coarse tree alone)
     int lowBits = 0;                  // Refine: the low bits the refinement codes
     std::vector<int32_t> fineDecoded; // Refine: the full grid of the vertices, decoded order
     std::vector<uint32_t> order;      // decoded index -> input index
-    std::vector<int32_t> decodedGrid; // decoded order (Refine: the coarse grid)
-    // The traversal's mesh: the input cut into manifold pieces (the input
-    // itself when it needed no repair), over decoded indices; vertices from
-    // order.size() on are copies. No positions, only their count.
-    Mesh renumbered;
-    MeshTopology topology;            // of renumbered
+    std::vector<int32_t> decodedGrid; // decoded order, copies included (Refine: the coarse grid)
+    // prepared.triangles over decoded indices; vertices from order.size() on
+    // are copies. Only their count is kept, no positions.
+    std::vector<uint32_t> triangles;
+    size_t vertexCount = 0;
+    MeshTopology topology;            // of triangles
     Predictor predictor = Predictor::Midpoint;
-    size_t inputFaces = 0;
-    std::vector<uint32_t> inputFace;  // face of renumbered -> input face
-    // Decoded vertex indices; flipped and duplicateOf per face of renumbered
-    // (encodeOnce puts them in decoded face order).
-    Repairs repairs;
-    bool repaired = false;
+    std::vector<uint32_t> copyOf;          // per copy, the decoded index of its original; non-decreasing
+    std::vector<uint32_t> looseTriangles;  // the faces repeating a vertex, decoded indices
 };
 
-Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeOptions& options,
+// The attempt's quantized and vertexOrder are left empty: only the attempt
+// kept gets them, by move (encodeWithGeometry, encodeConnectivity).
+Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, const EncodeOptions& options,
                    ProgressReporter& progress) {
     Attempt attempt;
     Encoded& result = attempt.encoded;
     result.grid = prepared.grid;
-    result.quantized = prepared.quantized;
-    result.vertexOrder = prepared.order;
-    if (options.keepVertexOrder)
-        for (size_t v = 0; v < result.vertexOrder.size(); ++v) result.vertexOrder[v] = uint32_t(v);
-    const MeshTopology& topology = prepared.topology;
-    const Predictor predictor = prepared.predictor;
-    const std::vector<int32_t>& grid = prepared.decodedGrid;
+    const MeshTopology& topology = numbered.topology;
+    const Predictor predictor = numbered.predictor;
+    const std::vector<int32_t>& grid = numbered.decodedGrid;
 
-    const std::vector<uint32_t>& t = prepared.renumbered.triangles;
-    const size_t faceCount = mesh.faceCount();
-    const size_t looseCount = prepared.repairs.looseCount();
+    const std::vector<uint32_t>& t = numbered.triangles;
+    const size_t faceCount = t.size() / 3;
+    const size_t looseCount = numbered.looseTriangles.size() / 3;
     const size_t duplicateCount = prepared.repairs.duplicateOf.size();
     const std::unique_ptr<SpatialIndex> candidates = makeSpatialIndex(grid, options.index, IndexRole::Traversal);
-    Traversal traversal(mesh.vertexCount(), faceCount, candidates.get());
-    EdgeModel model(grid, options.bits - prepared.lowBits, predictor, options.curvature, options.levers, faceCount,
+    Traversal traversal(numbered.vertexCount, faceCount, candidates.get());
+    EdgeModel model(grid, options.bits - numbered.lowBits, predictor, options.curvature, options.levers, faceCount,
                     *candidates, traversal);
     RankEncoder coder(model.contextCount());
 
     FileHeader header;
-    header.vertexCount = prepared.order.size();
+    header.vertexCount = numbered.order.size();
     header.faceCount = faceCount + looseCount + duplicateCount;
     header.hasRepairs = prepared.repaired;
-    header.copyCount = prepared.repairs.copyOf.size();
+    header.copyCount = numbered.copyOf.size();
     header.grid = result.grid;
     header.predictor = predictor;
-    header.geometryCoder = prepared.geometryCoder;
+    header.geometryCoder = numbered.geometryCoder;
     header.keepsVertexOrder = options.keepVertexOrder;
     header.curvature = options.curvature;
     header.levers = options.levers;
     Stats& stats = result.stats;
 
     result.faceRank.assign(prepared.inputFaces, 0);
-    std::vector<uint32_t> decodedFaceOrder;  // faces of renumbered, as the decoder will see them
-    decodedFaceOrder.reserve(faceCount);
+    // The faces as the decoder will see them: only repairs refer to them.
+    std::vector<uint32_t> decodedFaceOrder;
+    if (prepared.repaired) decodedFaceOrder.reserve(faceCount);
     std::vector<uint8_t> attached(faceCount, 0);
     size_t attachedCount = 0;
     progress.stage("ranking", 0.05);
@@ -101,7 +116,7 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
         // in input order, that no earlier component reached.
         attached[f] = 1;
         ++attachedCount;
-        decodedFaceOrder.push_back(uint32_t(f));
+        if (prepared.repaired) decodedFaceOrder.push_back(uint32_t(f));
         traversal.startComponent(t[3 * f], t[3 * f + 1], t[3 * f + 2]);
         header.startTriangles.insert(header.startTriangles.end(), {t[3 * f], t[3 * f + 1], t[3 * f + 2]});
         OpenEdge edge;
@@ -120,7 +135,7 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
                 model.resolved(apex);
                 traversal.attachApex(edge, apex);
                 attached[face] = 1;
-                decodedFaceOrder.push_back(face);
+                if (prepared.repaired) decodedFaceOrder.push_back(face);
                 result.faceRank[prepared.inputFace[face]] = rank;
                 ++attachedCount;
             }
@@ -134,10 +149,16 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     progress.stage("writing", 0.95);
     const std::vector<uint8_t> connectivity = coder.finish();
     const std::vector<uint8_t> vertexOrder =
-        options.keepVertexOrder ? encodeVertexOrder(prepared.order) : std::vector<uint8_t>();
+        options.keepVertexOrder ? encodeVertexOrder(numbered.order) : std::vector<uint8_t>();
+    // The repairs as the section stores them and undoCut replays them: the
+    // attempt's copies and faces repeating a vertex, the cut's flips and
+    // repeated faces in decoded face order. None for a mesh that needed none.
+    Repairs inDecodedOrder;
     std::vector<uint8_t> repairs;
     if (prepared.repaired) {
-        Repairs inDecodedOrder = prepared.repairs;
+        inDecodedOrder = prepared.repairs;
+        inDecodedOrder.copyOf = numbered.copyOf;
+        inDecodedOrder.looseTriangles = numbered.looseTriangles;
         std::vector<uint32_t> positionOf(faceCount);
         for (size_t i = 0; i < faceCount; ++i) {
             inDecodedOrder.flipped[i] = prepared.repairs.flipped[decodedFaceOrder[i]];
@@ -147,31 +168,25 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
         repairs = encodeRepairs(inDecodedOrder, header.vertexCount);
     }
     std::vector<uint8_t> secondPass;
-    const GeometryCoderEntry& geometryCoder = *geometryCoderOf(prepared.geometryCoder);
+    const GeometryCoderEntry& geometryCoder = *geometryCoderOf(numbered.geometryCoder);
     if (geometryCoder.encodeAfterConnectivity) {
         // Refine's low bits, predicted across the triangles as the decoder
         // rebuilds them (vertex copies stand for their originals).
         std::vector<uint32_t> triangles = traversal.triangles();
         for (uint32_t& v : triangles)
-            if (v >= header.vertexCount) v = prepared.repairs.copyOf[v - header.vertexCount];
-        secondPass = geometryCoder.encodeAfterConnectivity(prepared.geometry, prepared.fineDecoded, prepared.lowBits,
+            if (v >= header.vertexCount) v = numbered.copyOf[v - header.vertexCount];
+        secondPass = geometryCoder.encodeAfterConnectivity(numbered.geometry, numbered.fineDecoded, numbered.lowBits,
                                                            triangles);
     }
-    const std::vector<uint8_t>& geometry = geometryCoder.encodeAfterConnectivity ? secondPass : prepared.geometry;
+    const std::vector<uint8_t>& geometry = geometryCoder.encodeAfterConnectivity ? secondPass : numbered.geometry;
     FileParts written;
     result.bytes = writeFile(header, connectivity, geometry, vertexOrder, repairs, {}, &written);
-    // The faces as the decoder will give them back.
-    attempt.decodedTriangles = traversal.triangles();
-    if (prepared.repaired) {
-        Repairs inDecodedOrder = prepared.repairs;
-        for (size_t i = 0; i < faceCount; ++i) inDecodedOrder.flipped[i] = prepared.repairs.flipped[decodedFaceOrder[i]];
-        std::vector<uint32_t> positionOf(faceCount);
-        for (size_t i = 0; i < faceCount; ++i) positionOf[decodedFaceOrder[i]] = uint32_t(i);
-        for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
-        undoCut(attempt.decodedTriangles, inDecodedOrder, size_t(header.vertexCount));
-    }
+    // The faces as the decoder will give them back (the traversal's own:
+    // it is done, and a copy would cost 12 bytes a face at the peak).
+    attempt.decodedTriangles = traversal.takeTriangles();
+    if (prepared.repaired) undoCut(attempt.decodedTriangles, inDecodedOrder, size_t(header.vertexCount));
     if (options.keepVertexOrder)
-        for (uint32_t& v : attempt.decodedTriangles) v = prepared.order[v];
+        for (uint32_t& v : attempt.decodedTriangles) v = numbered.order[v];
     attempt.header = header;
     attempt.connectivity = connectivity;
     attempt.geometry = geometry;
@@ -179,17 +194,18 @@ Attempt encodeOnce(const Mesh& mesh, const PreparedMesh& prepared, const EncodeO
     attempt.repairs = repairs;
 
     fillStatsFromHeader(stats, written, result.bytes.size());
-    fillStatsFromTraversal(stats, prepared.lowBits, prepared.repairs);
+    fillStatsFromTraversal(stats, numbered.lowBits, inDecodedOrder);
     return attempt;
 }
 
 // Codes the vertex set with the given coder (lowBits > 0: Refine), numbers
 // the cut mesh in its decoded order and encodes the connectivity.
-Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const ManifoldCut& cut,
+Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
                            const EncodeOptions& options, int lowBits, ProgressReporter& progress) {
     progress.stage("coding vertices", 0.01);
-    prepared.lowBits = lowBits;
-    const std::vector<int32_t> coarse = lowBits > 0 ? coarsenGrid(prepared.quantized, lowBits) : std::vector<int32_t>();
+    NumberedMesh numbered;
+    numbered.lowBits = lowBits;
+    std::vector<int32_t> coarse = lowBits > 0 ? coarsenGrid(prepared.quantized, lowBits) : std::vector<int32_t>();
     const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : prepared.quantized;
     // options.geometry is Refine exactly when lowBits > 0 (encodeConnectivity).
     const GeometryCoderEntry* coder = geometryCoderOf(options.geometry);
@@ -204,66 +220,75 @@ Attempt encodeWithGeometry(const Mesh& mesh, PreparedMesh prepared, const Manifo
             encoding = std::move(alternative);
         }
     }
-    prepared.geometryCoder = coder->id;
-    prepared.geometry = std::move(encoding.bytes);
-    prepared.order = std::move(encoding.order);
+    numbered.geometryCoder = coder->id;
+    numbered.geometry = std::move(encoding.bytes);
+    numbered.order = std::move(encoding.order);
     if (lowBits > 0) {
-        prepared.fineDecoded.resize(3 * prepared.order.size());
-        for (size_t d = 0; d < prepared.order.size(); ++d)
+        numbered.fineDecoded.resize(3 * numbered.order.size());
+        for (size_t d = 0; d < numbered.order.size(); ++d)
             for (int k = 0; k < 3; ++k)
-                prepared.fineDecoded[3 * d + k] = prepared.quantized[3 * size_t(prepared.order[d]) + k];
+                numbered.fineDecoded[3 * d + k] = prepared.quantized[3 * size_t(numbered.order[d]) + k];
     }
-    // Decoded indices: the geometry coder's order, then the copies in the
-    // cut's order (each at its original's position).
     const size_t copies = cut.copyOf.size();
-    std::vector<uint32_t> decodedIndex(mesh.vertexCount() + copies);
-    prepared.decodedGrid.resize(3 * decodedIndex.size());
-    for (size_t d = 0; d < prepared.order.size(); ++d) {
-        decodedIndex[prepared.order[d]] = uint32_t(d);
-        for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = vertexGrid[3 * size_t(prepared.order[d]) + k];
-    }
-    // Copies are numbered in the decoded order of their originals, so the
-    // repairs section can list the originals as small differences.
-    std::vector<uint32_t> copiesByOriginal(copies);
-    for (size_t c = 0; c < copies; ++c) copiesByOriginal[c] = uint32_t(c);
-    std::stable_sort(copiesByOriginal.begin(), copiesByOriginal.end(), [&](uint32_t x, uint32_t y) {
-        return decodedIndex[cut.copyOf[x]] < decodedIndex[cut.copyOf[y]];
-    });
-    prepared.repairs.copyOf.resize(copies);
-    for (size_t r = 0; r < copies; ++r) {
-        const uint32_t c = copiesByOriginal[r], original = cut.copyOf[c];
-        const size_t d = mesh.vertexCount() + r;
-        decodedIndex[mesh.vertexCount() + c] = uint32_t(d);
-        prepared.repairs.copyOf[r] = decodedIndex[original];
-        for (int k = 0; k < 3; ++k) prepared.decodedGrid[3 * d + k] = vertexGrid[3 * size_t(original) + k];
-    }
-    prepared.repairs.looseTriangles.resize(cut.looseTriangles.size());
-    for (size_t c = 0; c < cut.looseTriangles.size(); ++c)
-        prepared.repairs.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
-    prepared.renumbered.triangles.resize(cut.triangles.size());
-    for (size_t c = 0; c < cut.triangles.size(); ++c) prepared.renumbered.triangles[c] = decodedIndex[cut.triangles[c]];
-    prepared.renumbered.positions.resize(prepared.decodedGrid.size());  // only its size matters to the checks
+    numbered.vertexCount = mesh.vertexCount() + copies;
     {
-        checkIndices(prepared.renumbered);
-        const std::string problem = topologyProblem(prepared.renumbered, &prepared.topology);
+        // Decoded indices: the geometry coder's order, then the copies in the
+        // cut's order (each at its original's position). Freed once the faces
+        // are renumbered (4 bytes a vertex at the traversal's peak).
+        std::vector<uint32_t> decodedIndex(numbered.vertexCount);
+        numbered.decodedGrid.resize(3 * decodedIndex.size());
+        for (size_t d = 0; d < numbered.order.size(); ++d) {
+            decodedIndex[numbered.order[d]] = uint32_t(d);
+            for (int k = 0; k < 3; ++k) numbered.decodedGrid[3 * d + k] = vertexGrid[3 * size_t(numbered.order[d]) + k];
+        }
+        // Copies are numbered in the decoded order of their originals, so the
+        // repairs section can list the originals as small differences.
+        std::vector<uint32_t> copiesByOriginal(copies);
+        for (size_t c = 0; c < copies; ++c) copiesByOriginal[c] = uint32_t(c);
+        std::stable_sort(copiesByOriginal.begin(), copiesByOriginal.end(), [&](uint32_t x, uint32_t y) {
+            return decodedIndex[cut.copyOf[x]] < decodedIndex[cut.copyOf[y]];
+        });
+        numbered.copyOf.resize(copies);
+        for (size_t r = 0; r < copies; ++r) {
+            const uint32_t c = copiesByOriginal[r], original = cut.copyOf[c];
+            const size_t d = mesh.vertexCount() + r;
+            decodedIndex[mesh.vertexCount() + c] = uint32_t(d);
+            numbered.copyOf[r] = decodedIndex[original];
+            for (int k = 0; k < 3; ++k) numbered.decodedGrid[3 * d + k] = vertexGrid[3 * size_t(original) + k];
+        }
+        numbered.looseTriangles.resize(cut.looseTriangles.size());
+        for (size_t c = 0; c < cut.looseTriangles.size(); ++c)
+            numbered.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
+        const std::vector<uint32_t>& triangles = *prepared.triangles;
+        numbered.triangles.resize(triangles.size());
+        for (size_t c = 0; c < triangles.size(); ++c) numbered.triangles[c] = decodedIndex[triangles[c]];
+    }
+    std::vector<int32_t>().swap(coarse);  // in decodedGrid now
+    {
+        checkIndices(numbered.triangles, numbered.vertexCount);
+        const std::string problem = topologyProblem(numbered.triangles, numbered.vertexCount, &numbered.topology);
         if (!problem.empty())
             throw Error(ErrorKind::Internal, "internal error: the mesh cut into manifold pieces is still not codable: " + problem);
     }
 
-    prepared.predictor = options.predictor;
-    if (prepared.predictor == Predictor::Auto) {
+    numbered.predictor = options.predictor;
+    if (numbered.predictor == Predictor::Auto) {
         progress.stage("choosing predictor", 0.04);
-        prepared.predictor = countPredictorVotes(prepared.renumbered, prepared.topology, prepared.decodedGrid).winner();
+        numbered.predictor =
+            countPredictorVotes(numbered.triangles, numbered.vertexCount, numbered.topology, numbered.decodedGrid).winner();
     }
-    Attempt best = encodeOnce(prepared.renumbered, prepared, options, progress);
+    Attempt best = encodeOnce(prepared, numbered, options, progress);
     const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
                           options.levers.confidenceContext || options.levers.angleOrder;
-    if (options.tryWithoutLevers && anyLever && prepared.renumbered.faceCount() < kTryWithoutLeversBelowFaces) {
+    if (options.tryWithoutLevers && anyLever && numbered.triangles.size() / 3 < kTryWithoutLeversBelowFaces) {
         EncodeOptions plain = options;
         plain.levers = Levers::none();
-        Attempt alternative = encodeOnce(prepared.renumbered, prepared, plain, progress);
+        Attempt alternative = encodeOnce(prepared, numbered, plain, progress);
         if (alternative.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(alternative);
     }
+    best.encoded.vertexOrder = std::move(numbered.order);
+    if (options.keepVertexOrder)
+        for (size_t v = 0; v < best.encoded.vertexOrder.size(); ++v) best.encoded.vertexOrder[v] = uint32_t(v);
     return best;
 }
 
@@ -347,16 +372,22 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // A mesh the traversal can take as it is needs no cut (the common case,
     // and the cheap test); any other is cut into manifold pieces.
     ManifoldCut cut;
-    MeshTopology asGiven;
-    const bool needsCut = !topologyProblem(mesh, &asGiven).empty();
+    bool needsCut = false;
+    {
+        // Its edge table answers only this question: freed before the
+        // attempts build their own (144 bytes a vertex on igea).
+        MeshTopology asGiven;
+        needsCut = !topologyProblem(mesh, &asGiven).empty();
+    }
+    // The attempts renumber the input's own faces when they need no cut.
+    prepared.triangles = needsCut ? &cut.triangles : &mesh.triangles;
     if (needsCut) {
         progress.stage("cutting into manifold pieces", 0.005);
         cut = cutIntoManifold(mesh.triangles, mesh.vertexCount());
     } else {
-        cut.triangles = mesh.triangles;
+        // No flips: only a repaired mesh's are read.
         cut.inputFace.resize(mesh.faceCount());
         for (size_t f = 0; f < cut.inputFace.size(); ++f) cut.inputFace[f] = uint32_t(f);
-        cut.flipped.assign(mesh.faceCount(), 0);
     }
     prepared.inputFaces = mesh.faceCount();
     prepared.repaired = !cut.isIdentity();
@@ -375,21 +406,26 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
         throw Error(ErrorKind::InvalidInput, "refinement bits " + std::to_string(options.refineBits) + " out of range 0.." +
                     std::to_string(std::min(kMaxRefineBits, options.bits - 1)) + " at " +
                     std::to_string(options.bits) + " bits");
-    if (options.geometry == GeometryCoder::Auto) return encodeWithChosenGeometry(mesh, prepared, cut, options, progress);
-    if (options.geometry != GeometryCoder::Refine || options.refineBits > 0) {
-        return encodeWithGeometry(mesh, prepared, cut, options,
+    Attempt best;
+    if (options.geometry == GeometryCoder::Auto) {
+        best = encodeWithChosenGeometry(mesh, prepared, cut, options, progress);
+    } else if (options.geometry != GeometryCoder::Refine || options.refineBits > 0) {
+        best = encodeWithGeometry(mesh, prepared, cut, options,
                                   options.geometry == GeometryCoder::Refine ? options.refineBits : 0, progress);
+    } else {
+        // Refine with the low bits left to the encoder: the spanning tree alone,
+        // and 1 .. kMaxTriedRefineBits low bits (the sizes are not unimodal in
+        // the low bits: plane-holes grows at 1 and 2, shrinks at 3 to 5).
+        EncodeOptions tree = options;
+        tree.geometry = GeometryCoder::SpanningTree;
+        best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
+        for (int lowBits = 1; lowBits <= std::min(kMaxTriedRefineBits, options.bits - 1); ++lowBits) {
+            Attempt refined = encodeWithGeometry(mesh, prepared, cut, options, lowBits, progress);
+            if (refined.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(refined);
+        }
     }
-    // Refine with the low bits left to the encoder: the spanning tree alone,
-    // and 1 .. kMaxTriedRefineBits low bits (the sizes are not unimodal in
-    // the low bits: plane-holes grows at 1 and 2, shrinks at 3 to 5).
-    EncodeOptions tree = options;
-    tree.geometry = GeometryCoder::SpanningTree;
-    Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
-    for (int lowBits = 1; lowBits <= std::min(kMaxTriedRefineBits, options.bits - 1); ++lowBits) {
-        Attempt refined = encodeWithGeometry(mesh, prepared, cut, options, lowBits, progress);
-        if (refined.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(refined);
-    }
+    // The attempts only read the quantized input; the one kept takes it.
+    best.encoded.quantized = std::move(prepared.quantized);
     return best;
 }
 

@@ -24,10 +24,10 @@ uint32_t MeshTopology::apexAcross(uint32_t a, uint32_t b, uint32_t* face) const 
     return kNoVertex;  // unreachable for a table built by checkMesh
 }
 
-void checkIndices(const Mesh& mesh) {
-    const std::vector<uint32_t>& t = mesh.triangles;
-    const size_t vertexCount = mesh.vertexCount();
-    const size_t faceCount = mesh.faceCount();
+void checkIndices(const Mesh& mesh) { checkIndices(mesh.triangles, mesh.vertexCount()); }
+
+void checkIndices(const std::vector<uint32_t>& t, size_t vertexCount) {
+    const size_t faceCount = t.size() / 3;
     if (t.size() % 3 != 0) throw Error(ErrorKind::InvalidInput, "the triangle array does not hold whole index triples");
     if (vertexCount >= kNoVertex || faceCount >= 0x55555555u)
         throw Error(ErrorKind::InvalidInput, "the mesh is too large: at most 2^32-2 vertices and 1431655764 faces are supported");
@@ -47,9 +47,11 @@ MeshTopology checkMesh(const Mesh& mesh) {
 }
 
 std::string topologyProblem(const Mesh& mesh, MeshTopology* out) {
-    const std::vector<uint32_t>& t = mesh.triangles;
-    const size_t vertexCount = mesh.vertexCount();
-    const size_t faceCount = mesh.faceCount();
+    return topologyProblem(mesh.triangles, mesh.vertexCount(), out);
+}
+
+std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, MeshTopology* out) {
+    const size_t faceCount = t.size() / 3;
     for (size_t f = 0; f < faceCount; ++f) {
         if (t[3 * f] == t[3 * f + 1] || t[3 * f + 1] == t[3 * f + 2] || t[3 * f] == t[3 * f + 2])
             return (faceText(t, f) + " repeats a vertex index; such degenerate faces are not supported");

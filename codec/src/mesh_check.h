@@ -23,6 +23,9 @@ struct MeshTopology {
 // Throws Error naming the first face with an index out of range, or if the
 // arrays are malformed or too large.
 void checkIndices(const Mesh& mesh);
+// The same over bare faces, for a mesh the encoder keeps without positions
+// (3 floats per vertex it would only count).
+void checkIndices(const std::vector<uint32_t>& triangles, size_t vertexCount);
 
 // Throws Error naming the first offending element if the mesh has an index
 // out of range, a face repeating a vertex, a directed edge used twice (a
@@ -35,6 +38,7 @@ MeshTopology checkMesh(const Mesh& mesh);
 // directed-edge table), otherwise the message checkMesh would throw.
 // Indices must already be in range (checkIndices).
 std::string topologyProblem(const Mesh& mesh, MeshTopology* topology);
+std::string topologyProblem(const std::vector<uint32_t>& triangles, size_t vertexCount, MeshTopology* topology);
 
 }  // namespace drm
 

@@ -10,11 +10,11 @@
 
 namespace drm {
 
-PredictorVotes countPredictorVotes(const Mesh& mesh, const MeshTopology& topology, const std::vector<int32_t>& grid) {
-    const std::vector<uint32_t>& t = mesh.triangles;
-    const size_t faceCount = mesh.faceCount();
+PredictorVotes countPredictorVotes(const std::vector<uint32_t>& t, size_t vertexCount, const MeshTopology& topology,
+                                   const std::vector<int32_t>& grid) {
+    const size_t faceCount = t.size() / 3;
     // Squared distance from each vertex to its nearest neighbour in the mesh.
-    std::vector<double> nearestNeighbour2(mesh.vertexCount(), std::numeric_limits<double>::infinity());
+    std::vector<double> nearestNeighbour2(vertexCount, std::numeric_limits<double>::infinity());
     for (size_t c = 0; c < t.size(); ++c) {
         const uint32_t a = t[c], b = t[c - c % 3 + (c + 1) % 3];
         const double d2 = norm2(gridPoint(grid, a) - gridPoint(grid, b));
@@ -23,7 +23,7 @@ PredictorVotes countPredictorVotes(const Mesh& mesh, const MeshTopology& topolog
     }
 
     PredictorVotes votes;
-    Traversal traversal(mesh.vertexCount(), faceCount, nullptr);
+    Traversal traversal(vertexCount, faceCount, nullptr);
     std::vector<uint8_t> attached(faceCount, 0);
     for (size_t f = 0; f < faceCount; ++f) {
         if (attached[f]) continue;

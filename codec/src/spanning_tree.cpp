@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "cell_index.h"
@@ -78,42 +79,75 @@ NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count) {
     return graph;
 }
 
-// Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
-// children nearest first.
-std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
+namespace {
+
+// A candidate edge of the forest, a < b. Length is the squared length's
+// type: 32 bits where every squared length fits (grids up to 15 bits, the
+// default 12 among them), 12 bytes an edge instead of 16.
+template <typename Length>
+struct Edge {
+    Length length2;
+    uint32_t a, b;
+};
+
+template <typename Length>
+std::vector<std::vector<uint32_t>> spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
     const size_t n = grid.size() / 3;
-    std::vector<std::vector<uint32_t>> children(n);
     const std::vector<uint32_t>& neighbours = nearest.neighbours;
     const size_t k = size_t(nearest.k);
-    if (n < 2) return children;
-    struct Edge {
-        int64_t length2;
-        uint32_t a, b;
+    auto length2 = [&](uint32_t a, uint32_t b) { return Length(drm::distance2(gridPointOf(grid, a), gridPointOf(grid, b))); };
+    // Mutual neighbours give the same edge twice: keep it once (the sort
+    // below is most of the tree's cost).
+    auto kept = [&](size_t v, uint32_t w) {
+        if (w == kNoVertex) return false;
+        const uint32_t* theirs = neighbours.data() + size_t(w) * k;
+        return !(w < v && std::find(theirs, theirs + k, uint32_t(v)) != theirs + k);
     };
-    auto length2 = [&](uint32_t a, uint32_t b) { return drm::distance2(gridPointOf(grid, a), gridPointOf(grid, b)); };
-    std::vector<Edge> edges;
-    edges.reserve(n * k);
+    // Counted before they are stored: room for k edges a vertex (128 bytes
+    // a vertex) was the largest block of the encoder's peak on igea, and
+    // mutual pairs are kept once.
+    size_t edgeCount = 0;
+    for (size_t v = 0; v < n; ++v)
+        for (size_t j = 0; j < k; ++j) edgeCount += kept(v, neighbours[v * k + j]) ? 1 : 0;
+    std::vector<Edge<Length>> edges;
+    edges.reserve(edgeCount);
     for (size_t v = 0; v < n; ++v)
         for (size_t j = 0; j < k; ++j) {
             const uint32_t w = neighbours[v * k + j];
-            if (w == kNoVertex) continue;
-            // Mutual neighbours give the same edge twice: keep it once (the
-            // sort below is most of the tree's cost).
-            const uint32_t* theirs = neighbours.data() + size_t(w) * k;
-            if (w < v && std::find(theirs, theirs + k, uint32_t(v)) != theirs + k) continue;
+            if (!kept(v, w)) continue;
             edges.push_back({length2(uint32_t(v), w), uint32_t(std::min<size_t>(v, w)), uint32_t(std::max<size_t>(v, w))});
         }
-    std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+    std::sort(edges.begin(), edges.end(), [](const Edge<Length>& x, const Edge<Length>& y) {
         return x.length2 != y.length2 ? x.length2 < y.length2 : (x.a != y.a ? x.a < y.a : x.b < y.b);
     });
-    UnionFind sets(n);
-    std::vector<std::vector<std::pair<int64_t, uint32_t>>> adjacent(n);
-    for (const Edge& e : edges)
-        if (sets.join(e.a, e.b)) {
-            adjacent[e.a].push_back({e.length2, e.b});
-            adjacent[e.b].push_back({e.length2, e.a});
+    // Kruskal's forest, compacted in place and trimmed (at most n - 1 edges).
+    size_t treeEdges = 0;
+    {
+        UnionFind sets(n);
+        for (const Edge<Length>& e : edges)
+            if (sets.join(e.a, e.b)) edges[treeEdges++] = e;
+    }
+    edges.resize(treeEdges);
+    edges.shrink_to_fit();
+    // Each vertex's forest edges as (squared length, other end), all in one
+    // array: a vector per vertex cost 24 bytes and an allocation each.
+    std::vector<uint32_t> offset(n + 1, 0);
+    for (const Edge<Length>& e : edges) {
+        ++offset[e.a + 1];
+        ++offset[e.b + 1];
+    }
+    for (size_t v = 0; v < n; ++v) offset[v + 1] += offset[v];
+    std::vector<std::pair<Length, uint32_t>> adjacent(offset[n]);
+    {
+        std::vector<uint32_t> fill(offset.begin(), offset.end() - 1);
+        for (const Edge<Length>& e : edges) {
+            adjacent[fill[e.a]++] = {e.length2, e.b};
+            adjacent[fill[e.b]++] = {e.length2, e.a};
         }
+    }
+    std::vector<Edge<Length>>().swap(edges);
     // Orient away from each component's first vertex (input order).
+    std::vector<std::vector<uint32_t>> children(n);
     std::vector<uint8_t> seen(n, 0);
     std::vector<uint32_t> stack;
     for (size_t root = 0; root < n; ++root) {
@@ -123,16 +157,32 @@ std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& gr
         while (!stack.empty()) {
             const uint32_t v = stack.back();
             stack.pop_back();
-            std::sort(adjacent[v].begin(), adjacent[v].end());
-            for (const auto& next : adjacent[v])
-                if (!seen[next.second]) {
-                    seen[next.second] = 1;
-                    children[v].push_back(next.second);
-                    stack.push_back(next.second);
+            const auto first = adjacent.begin() + ptrdiff_t(offset[v]), last = adjacent.begin() + ptrdiff_t(offset[v + 1]);
+            std::sort(first, last);
+            for (auto next = first; next != last; ++next)
+                if (!seen[next->second]) {
+                    seen[next->second] = 1;
+                    children[v].push_back(next->second);
+                    stack.push_back(next->second);
                 }
         }
     }
     return children;
+}
+
+}  // namespace
+
+// Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
+// children nearest first.
+std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
+    const size_t n = grid.size() / 3;
+    if (n < 2) return std::vector<std::vector<uint32_t>>(n);
+    // No coordinate difference exceeds the coordinates' range (at most 21
+    // bits: the test cannot overflow).
+    const auto range = std::minmax_element(grid.begin(), grid.end());
+    const int64_t span = int64_t(*range.second) - int64_t(*range.first);
+    if (3 * span * span <= int64_t(std::numeric_limits<uint32_t>::max())) return spanningForestOf<uint32_t>(grid, nearest);
+    return spanningForestOf<int64_t>(grid, nearest);
 }
 
 // The encoder may visit children in any order; the first child of a vertex
