@@ -67,12 +67,12 @@ public:
     void remove(uint32_t v) override;
     size_t presentCount() const override { return present_.size(); }
     void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const override;
-    void collectNearWithPoints(Vec3 q, double radius, std::vector<uint32_t>& out,
-                               std::vector<int32_t>& points) const override {
-        collectNear(q, radius, out);
-        points.resize(3 * out.size());
-        for (size_t i = 0; i < out.size(); ++i)
-            for (size_t k = 0; k < 3; ++k) points[3 * i + k] = grid_[3 * size_t(out[i]) + k];
+    void forEachNear(Vec3 q, double radius, PointRunVisitor visit) const override {
+        collectNear(q, radius, near_);
+        nearPoints_.resize(3 * near_.size());
+        for (size_t i = 0; i < near_.size(); ++i)
+            for (size_t k = 0; k < 3; ++k) nearPoints_[3 * i + k] = grid_[3 * size_t(near_[i]) + k];
+        visit(near_.data(), nearPoints_.data(), near_.size());
     }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
     void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) const override;
@@ -110,6 +110,8 @@ private:
     mutable std::vector<size_t> found_;
     mutable std::vector<float> foundDistance_;
     mutable std::vector<RankedVertex> ranked_;
+    mutable std::vector<uint32_t> near_;  // forEachNear's run
+    mutable std::vector<int32_t> nearPoints_;
 };
 
 FlannIndex::FlannIndex(const std::vector<int32_t>& grid) : grid_(grid) {

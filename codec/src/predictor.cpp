@@ -93,30 +93,34 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     double radius = 2.0 * std::max(height, edgeLength);
     searchedBall_ = true;
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
-        candidates_.collectNearWithPoints(mid, radius, nearby_, nearbyPoints_);
         inBall_.clear();
         double firstHeight = 0;
         uint32_t first = 0;
         bool found = false;
-        for (size_t i = 0; i < nearby_.size(); ++i) {
-            const uint32_t v = nearby_[i];
-            const int32_t* at = nearbyPoints_.data() + 3 * i;  // gridPoint(grid_, v)
-            const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - mid;
-            if (norm2(x) > radius * radius) continue;
-            inBall_.push_back(uint32_t(i));
-            const double h = dot(x, ahead);
-            if (h <= 0) continue;
-            const double along = dot(x, e) / edgeLength;
-            if (along > halfSlab || along < -halfSlab) continue;
-            // The geometric tests are cheap and reject most vertices; the
-            // admissibility test (edge look-ups) only decides between a
-            // vertex and the best so far.
-            if ((!found || h < firstHeight || (h == firstHeight && v < first)) && usable_(v, edge)) {
-                firstHeight = h;
-                first = v;
-                found = true;
+        // The test runs on the index's runs of vertices where they lie,
+        // nothing copied: the box around the ball holds a few dozen, and
+        // most of them lie outside the ball, behind the edge or beside the
+        // slab.
+        candidates_.forEachNear(mid, radius, [&](const uint32_t* ids, const int32_t* at, size_t count) {
+            for (size_t i = 0; i < count; ++i, at += 3) {
+                const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - mid;
+                if (norm2(x) > radius * radius) continue;
+                const uint32_t v = ids[i];
+                inBall_.push_back({v, at});
+                const double h = dot(x, ahead);
+                if (h <= 0) continue;
+                const double along = dot(x, e) / edgeLength;
+                if (along > halfSlab || along < -halfSlab) continue;
+                // The geometric tests are cheap and reject most vertices; the
+                // admissibility test (edge look-ups) only decides between a
+                // vertex and the best so far.
+                if ((!found || h < firstHeight || (h == firstHeight && v < first)) && usable_(v, edge)) {
+                    firstHeight = h;
+                    first = v;
+                    found = true;
+                }
             }
-        }
+        });
         if (found) return mid + (p - mid) * (firstHeight / height);
     }
     return p;

@@ -49,11 +49,12 @@ public:
     // Whether the last predict() searched a ball for the first vertex
     // ahead (not when the edge or the prediction's height is zero), and
     // then calls visit(v, point) for every present vertex in that ball,
-    // admissible or not (point: its grid x, y, z).
+    // admissible or not (point: its grid x, y, z). Until the index next
+    // changes (a culled vertex removed).
     bool searchedBall() const { return searchedBall_; }
     template <class Visit>
     void forEachInBall(Visit visit) const {
-        for (uint32_t i : inBall_) visit(nearby_[i], nearbyPoints_.data() + 3 * size_t(i));
+        for (const BallVertex& b : inBall_) visit(b.id, b.point);
     }
 
 private:
@@ -67,9 +68,14 @@ private:
     const Admissibility& usable_;
     PredictorTuning tuning_;
     std::vector<uint32_t> nearby_;  // scratch, reused by every query
-    std::vector<int32_t> nearbyPoints_;  // their coordinates, 3 per vertex
     bool searchedBall_ = false;
-    std::vector<uint32_t> inBall_;  // positions in nearby_ of the last search's vertices within its ball
+    // The last search's vertices within its ball, their coordinates where
+    // the index keeps them.
+    struct BallVertex {
+        uint32_t id;
+        const int32_t* point;
+    };
+    std::vector<BallVertex> inBall_;
 };
 
 }  // namespace drm

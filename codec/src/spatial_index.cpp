@@ -32,9 +32,8 @@ public:
     void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const override {
         cells_.collectNear(q, radius, out);
     }
-    void collectNearWithPoints(Vec3 q, double radius, std::vector<uint32_t>& out,
-                               std::vector<int32_t>& points) const override {
-        cells_.collectNear(q, radius, out, &points);
+    void forEachNear(Vec3 q, double radius, PointRunVisitor visit) const override {
+        cells_.forEachNear(q, radius, visit);
     }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
     void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) const override;

@@ -42,20 +42,32 @@ inline FixedPoint fixedPointOf(const std::vector<int32_t>& grid, uint32_t v) {
             int64_t(grid[3 * size_t(v) + 2]) * kSubUnits};
 }
 
-// Which vertices a nearest search may return: a reference to any callable
-// bool(uint32_t), which must outlive the call (a lambda passed as an
-// argument does). Asked only of vertices that could enter the answer.
-class VertexFilter {
+// A reference to any callable with the signature R(Args...), which must
+// outlive the call (a lambda passed as an argument does): the index's
+// searches take their callbacks this way, being virtual.
+template <class Signature>
+class CallbackRef;
+template <class R, class... Args>
+class CallbackRef<R(Args...)> {
 public:
     template <class F>
-    VertexFilter(const F& f)  // NOLINT: implicit, so that lambdas pass as they are
-        : object_(&f), call_([](const void* object, uint32_t v) { return (*static_cast<const F*>(object))(v); }) {}
-    bool operator()(uint32_t v) const { return call_(object_, v); }
+    CallbackRef(const F& f)  // NOLINT: implicit, so that lambdas pass as they are
+        : object_(&f), call_([](const void* object, Args... args) -> R {
+              return (*static_cast<const F*>(object))(args...);
+          }) {}
+    R operator()(Args... args) const { return call_(object_, args...); }
 
 private:
     const void* object_;
-    bool (*call_)(const void*, uint32_t);
+    R (*call_)(const void*, Args...);
 };
+
+// Which vertices a nearest search may return; asked only of vertices that
+// could enter the answer.
+using VertexFilter = CallbackRef<bool(uint32_t)>;
+// A run of `count` present vertices: their indices, and their grid
+// coordinates (x, y, z of ids[i] at points[3 i]).
+using PointRunVisitor = CallbackRef<void(const uint32_t* ids, const int32_t* points, size_t count)>;
 
 class SpatialIndex {
 public:
@@ -71,11 +83,11 @@ public:
     // units), plus possibly some farther ones, in no particular order:
     // callers apply their own exact test. out is cleared first.
     virtual void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const = 0;
-    // The same vertices, with their grid coordinates: x, y, z of out[i] at
-    // points[3 i] (the grid keeps them with its cells, so the caller's loop
-    // reads them in order instead of looking each up).
-    virtual void collectNearWithPoints(Vec3 q, double radius, std::vector<uint32_t>& out,
-                                       std::vector<int32_t>& points) const = 0;
+    // The same vertices, with their grid coordinates, handed to visit in
+    // runs (the grid keeps the coordinates with its cells, so the caller's
+    // test reads them in order, and nothing is copied). The runs stay valid
+    // until the next remove() or forEachNear().
+    virtual void forEachNear(Vec3 q, double radius, PointRunVisitor visit) const = 0;
 
     // The `count` present vertices nearest p that accept takes, exactly:
     // (fixedDistance2, vertex) in increasing order (ties by index); fewer

@@ -160,54 +160,11 @@ void VertexIndex::remove(uint32_t v) {
     presentSlot_[v] = kNotPresent;
 }
 
-void VertexIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out, std::vector<int32_t>* points) const {
+void VertexIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const {
     out.clear();
-    if (points) points->clear();
-    auto everything = [&] {
-        collectAll(out);
-        if (points) {
-            points->resize(3 * out.size());
-            for (size_t i = 0; i < out.size(); ++i)
-                for (size_t k = 0; k < 3; ++k) (*points)[3 * i + k] = slotPoints_[3 * size_t(slotOf_[out[i]]) + k];
-        }
-    };
-    if (present_.empty()) return;
-    // A box of cells around the ball, one unit wider than it so that float
-    // rounding of q and radius cannot drop a vertex on its surface.
-    const double reach = radius + 1.0;
-    const double top = double(lastCell_ + 1) * double(int64_t(1) << shift_);
-    if (!(reach < top) || reach > double(int64_t(1) << 26)) {  // also NaN; squares stay within int64
-        everything();
-        return;
-    }
-    int64_t lo[3], hi[3];
-    const double center[3] = {q.x - double(origin_), q.y - double(origin_), q.z - double(origin_)};
-    int64_t boxCells = 1;
-    for (int k = 0; k < 3; ++k) {
-        const double a = std::max(center[k] - reach, -1.0), b = std::min(center[k] + reach, top);
-        if (!(a <= b)) return;  // the ball misses the grid
-        lo[k] = std::max<int64_t>(int64_t(std::floor(a)), 0) >> shift_;
-        hi[k] = std::min<int64_t>(int64_t(std::floor(b)) >> shift_, lastCell_);
-        if (lo[k] > hi[k]) return;
-        boxCells *= hi[k] - lo[k] + 1;
-    }
-    if (uint64_t(boxCells) > 2 * present_.size() + 64) {
-        everything();
-        return;
-    }
-    // The box's corner cells may miss the ball: the cells are tested against
-    // it in fixed point, the centre rounded and the radius padded by the
-    // unit already added (so rounding cannot drop a vertex).
-    const FixedPoint p{int64_t(std::floor(center[0] * kSubUnits + 0.5)), int64_t(std::floor(center[1] * kSubUnits + 0.5)),
-                       int64_t(std::floor(center[2] * kSubUnits + 0.5))};  // relative to the origin, as cells are
-    const int64_t bound = int64_t(std::ceil(reach * kSubUnits)) + 1;
-    auto append = [&out, points](const uint32_t* first, const int32_t* at, size_t count) {
-        out.insert(out.end(), first, first + count);
-        if (points) points->insert(points->end(), at, at + 3 * count);
-    };
-    for (int64_t x = lo[0]; x <= hi[0]; ++x)
-        for (int64_t y = lo[1]; y <= hi[1]; ++y)
-            forEachCellOfColumn(p, x, y, lo[2], hi[2], false, bound * bound, append);
+    forEachNear(q, radius, [&out](const uint32_t* ids, const int32_t*, size_t count) {
+        out.insert(out.end(), ids, ids + count);
+    });
 }
 
 VertexIndex::CellCoord VertexIndex::cellOfPoint(const FixedPoint& p) const {  // p relative to the origin

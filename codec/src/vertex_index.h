@@ -16,6 +16,7 @@
 #define DRM_VERTEX_INDEX_H
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -37,11 +38,14 @@ public:
     void remove(uint32_t v);
     size_t presentCount() const { return present_.size(); }
 
-    // Appends to out every present vertex whose distance from q is at most
-    // radius (grid units), plus possibly some farther ones: callers apply
-    // their own exact test. out is cleared first.
-    // points, if given, gets x, y, z of out[i] at 3 i (cleared first).
-    void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out, std::vector<int32_t>* points = nullptr) const;
+    // Calls visit(ids, points, count) with runs of present vertices (points:
+    // their x, y, z, 3 per vertex) that hold every present vertex whose
+    // distance from q is at most radius (grid units), plus possibly some
+    // farther ones: callers apply their own exact test.
+    template <class Visit>
+    void forEachNear(Vec3 q, double radius, Visit visit) const;
+    // The same vertices, appended to out (cleared first).
+    void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const;
 
     // Rings of cells around a fixed-point location, for exact nearest
     // searches: ring r holds the cells at Chebyshev cell distance r from the
@@ -86,7 +90,7 @@ private:
     // Fixed-point distance from p to the nearest point of cell `cell`
     // along one axis (p relative to the origin).
     int64_t gap(int64_t p, int64_t cell) const {
-        const int64_t lo = cell * cellWidth_ * kSubUnits, hi = (cell * cellWidth_ + cellWidth_ - 1) * kSubUnits;
+        const int64_t lo = cell * cellWidth_ * kSubUnits, hi = lo + (cellWidth_ - 1) * kSubUnits;
         return p < lo ? lo - p : (p > hi ? p - hi : 0);
     }
     // Calls visit for the cells (x, y, z), z0 <= z <= z1 (or only z0 and z1
@@ -158,6 +162,42 @@ void VertexIndex::forEachCellOfRing(const FixedPoint& p, int ring, int64_t bound
             const bool side = x == c.x - r || x == c.x + r || y == c.y - r || y == c.y + r;
             forEachCellOfColumn(local, x, y, c.z - r, c.z + r, !side, bound2, visit);
         }
+}
+
+template <class Visit>
+void VertexIndex::forEachNear(Vec3 q, double radius, Visit visit) const {
+    if (present_.empty()) return;
+    auto everything = [&] {
+        for (size_t c = 0; c < cellStart_.size(); ++c)
+            if (cellPresent_[c] != 0)
+                visit(slots_.data() + cellStart_[c], slotPoints_.data() + 3 * size_t(cellStart_[c]),
+                      size_t(cellPresent_[c]));
+    };
+    // A box of cells around the ball, one unit wider than it so that float
+    // rounding of q and radius cannot drop a vertex on its surface.
+    const double reach = radius + 1.0;
+    const double top = double(lastCell_ + 1) * double(int64_t(1) << shift_);
+    if (!(reach < top) || reach > double(int64_t(1) << 26)) return everything();  // also NaN; squares stay in int64
+    int64_t lo[3], hi[3];
+    const double center[3] = {q.x - double(origin_), q.y - double(origin_), q.z - double(origin_)};
+    int64_t boxCells = 1;
+    for (int k = 0; k < 3; ++k) {
+        const double a = std::max(center[k] - reach, -1.0), b = std::min(center[k] + reach, top);
+        if (!(a <= b)) return;  // the ball misses the grid
+        lo[k] = std::max<int64_t>(int64_t(std::floor(a)), 0) >> shift_;
+        hi[k] = std::min<int64_t>(int64_t(std::floor(b)) >> shift_, lastCell_);
+        if (lo[k] > hi[k]) return;
+        boxCells *= hi[k] - lo[k] + 1;
+    }
+    if (uint64_t(boxCells) > 2 * present_.size() + 64) return everything();
+    // The box's corner cells may miss the ball: the cells are tested against
+    // it in fixed point, the centre rounded and the radius padded by the
+    // unit already added (so rounding cannot drop a vertex).
+    const FixedPoint p{int64_t(std::floor(center[0] * kSubUnits + 0.5)), int64_t(std::floor(center[1] * kSubUnits + 0.5)),
+                       int64_t(std::floor(center[2] * kSubUnits + 0.5))};  // relative to the origin, as cells are
+    const int64_t bound = int64_t(std::ceil(reach * kSubUnits)) + 1;
+    for (int64_t x = lo[0]; x <= hi[0]; ++x)
+        for (int64_t y = lo[1]; y <= hi[1]; ++y) forEachCellOfColumn(p, x, y, lo[2], hi[2], false, bound * bound, visit);
 }
 
 template <class Distance, class Accept>

@@ -130,19 +130,20 @@ TEST_P(BothIndexes, CollectNearHoldsEveryPresentVertexInTheBall) {
                 if (w % 3 != 0 && norm2(d) <= r * r) ASSERT_TRUE(got.count(w)) << "vertex " << w << " query " << q;
                 if (w % 3 == 0) ASSERT_FALSE(got.count(w)) << "removed vertex " << w;
             }
-            // The same vertices with their coordinates.
-            std::vector<uint32_t> withPoints;
-            std::vector<int32_t> points;
-            index->collectNearWithPoints(c, r, withPoints, points);
-            ASSERT_EQ(std::set<uint32_t>(withPoints.begin(), withPoints.end()), got);
-            ASSERT_EQ(points.size(), 3 * withPoints.size());
-            for (size_t i = 0; i < withPoints.size(); ++i)
-                for (size_t k = 0; k < 3; ++k) ASSERT_EQ(points[3 * i + k], grid[3 * size_t(withPoints[i]) + k]);
+            // The same vertices with their coordinates, in runs.
+            std::vector<uint32_t> visited;
+            index->forEachNear(c, r, [&](const uint32_t* ids, const int32_t* points, size_t count) {
+                for (size_t i = 0; i < count; ++i) {
+                    visited.push_back(ids[i]);
+                    for (size_t k = 0; k < 3; ++k) ASSERT_EQ(points[3 * i + k], grid[3 * size_t(ids[i]) + k]);
+                }
+            });
+            ASSERT_EQ(visited.size(), near.size());
+            ASSERT_EQ(std::set<uint32_t>(visited.begin(), visited.end()), got);
         }
     }
 }
 
-// 12-bit and 21-bit grids (real ones), and 2^25, past float's exact integers.
 INSTANTIATE_TEST_SUITE_P(Extents, BothIndexes, ::testing::Values(4095, (1 << 21) - 1, (1 << 25) - 1));
 
 TEST(SpatialIndex, AutoTakesTheMeasuredDefaults) {
