@@ -66,6 +66,7 @@ uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const Open
         if (rank == 1) return preferred;
         --rank;
     }
+    if (rank == 0) throw Error(ErrorKind::Corrupt, "rank 0 names no vertex (it codes a boundary edge)");
     if (rank <= listed.size())  // callers look the listed ranks up themselves
         throw Error(ErrorKind::Internal, "vertexOfRank asked for listed rank " + std::to_string(rank));
     rank -= uint32_t(listed.size());
@@ -82,11 +83,10 @@ uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const Open
 }
 
 // The index finds them exactly (ties ordered by index), whichever it is.
-const std::vector<RankedVertex>& RankSearch::nearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
-                                                     uint32_t skip) {
+const std::vector<RankedVertex>& RankSearch::nearest(const FixedPoint& p, size_t count, const OpenEdge& edge) {
     // Admissibility costs edge look-ups: the index asks it only of vertices
     // that would enter the answer.
-    index_.nearest(p, count, [&](uint32_t v) { return v != skip && admissible_(v, edge); }, ranked_);
+    index_.nearest(p, count, [&](uint32_t v) { return admissible_(v, edge); }, ranked_);
     return ranked_;
 }
 

@@ -44,10 +44,9 @@ public:
     uint32_t vertexOfRank(const FixedPoint& p, uint32_t rank, const OpenEdge& edge, uint32_t preferred = kNoVertex,
                           const std::vector<RankedVertex>& listed = {});
 
-    // The `count` admissible vertices nearest p other than `skip`, nearest
-    // first; fewer if fewer exist.
-    const std::vector<RankedVertex>& nearest(const FixedPoint& p, size_t count, const OpenEdge& edge,
-                                             uint32_t skip = kNoVertex);
+    // The `count` admissible vertices nearest p, nearest first; fewer if
+    // fewer exist.
+    const std::vector<RankedVertex>& nearest(const FixedPoint& p, size_t count, const OpenEdge& edge);
     // The same among the vertices some other search has found (the ball
     // the predictor searched, which holds most answers): calls
     // forEachCandidate(offer), which calls offer(v, point) for each
