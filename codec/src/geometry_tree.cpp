@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <string>
 
@@ -53,8 +54,12 @@ struct Predictions {
     // Format 3 codes the residual from the parent (candidate 0) in this
     // frame: the surface's normal at the parent as its third axis.
     LocalFrame frame;
+    // Each candidate's flag context (flagContextOf), once known: the
+    // encoder asks for it again when it codes the flag it priced.
+    mutable int8_t flagContext[kMaxCandidates];
 
     Predictions() {
+        std::fill(flagContext, flagContext + kMaxCandidates, int8_t(-1));
         std::fill(xs, xs + kPaddedCandidates, kFar);
         std::fill(ys, ys + kPaddedCandidates, kFar);
         std::fill(zs, zs + kPaddedCandidates, kFar);
@@ -90,14 +95,23 @@ int distanceBucket(const Predictions& p, int c) {
     if (nearest < p.spacing2) return 2;
     return 3;
 }
+// Four lanes at once (GCC and Clang vector extensions: SSE2 on x86-64,
+// NEON on ARM, plain code elsewhere); the compilers left the scalar loop
+// unvectorized, at about 140 instructions a call.
+typedef uint32_t Lanes __attribute__((vector_size(16)));
 int crowded(const Predictions& p, int c) {
-    const int32_t x = p.candidate[c].x, y = p.candidate[c].y, z = p.candidate[c].z, r = p.crowdRadius;
-    const uint32_t width = uint32_t(2 * r);
-    int within = 0;  // c itself and any other
-    for (int k = 0; k < kPaddedCandidates; ++k)
-        within += (uint32_t(p.xs[k] - x + r) <= width) & (uint32_t(p.ys[k] - y + r) <= width) &
-                  (uint32_t(p.zs[k] - z + r) <= width);
-    return within > 1 ? 1 : 0;
+    const uint32_t x = uint32_t(p.candidate[c].x - p.crowdRadius), y = uint32_t(p.candidate[c].y - p.crowdRadius),
+                   z = uint32_t(p.candidate[c].z - p.crowdRadius);
+    const uint32_t width = uint32_t(2 * p.crowdRadius);
+    Lanes within = {0, 0, 0, 0};  // minus the count of candidates within, per lane: c itself and any other
+    for (int k = 0; k < kPaddedCandidates; k += 4) {
+        Lanes xs, ys, zs;
+        std::memcpy(&xs, p.xs + k, sizeof xs);
+        std::memcpy(&ys, p.ys + k, sizeof ys);
+        std::memcpy(&zs, p.zs + k, sizeof zs);
+        within += Lanes((xs - x) <= width) & Lanes((ys - y) <= width) & Lanes((zs - z) <= width);
+    }
+    return uint32_t(-(within[0] + within[1] + within[2] + within[3])) > 1 ? 1 : 0;
 }
 bool repeatsEarlier(const Predictions& p, int c) {
     const GridPoint at = p.candidate[c];
@@ -148,6 +162,24 @@ struct CodingState {
     int64_t frameScore = 0;
     uint64_t framedResiduals = 0;  // how many were coded in the frame (for tests and statistics)
     bool frameNow() const { return framedParent && frameScore > 0; }
+
+    // The encoder prices residuals (Pricing) under the models of one group,
+    // axis and context at a time, and a price holds until a residual is
+    // coded in that context: each coded vertex changes three of the 48
+    // tables, so the others are kept (encoders only: a decoder never prices).
+    uint32_t residualsCoded[kResidualGroups][3][kMagnitudeContexts] = {};
+    struct KeptCosts {
+        ResidualCosts costs;
+        uint32_t residualsCoded = ~0u;  // when they were built
+    };
+    std::vector<KeptCosts> keptCosts;
+    const ResidualCosts& residualCosts(int group, int a, int context) {
+        if (keptCosts.empty()) keptCosts.resize(kResidualGroups * 3 * kMagnitudeContexts);
+        KeptCosts& kept = keptCosts[size_t((group * 3 + a) * kMagnitudeContexts + context)];
+        const uint32_t now = residualsCoded[group][a][context];
+        if (kept.residualsCoded != now) kept = {ResidualCosts(axis[group][a], context), now};
+        return kept.costs;
+    }
 
     CodingState(int cellBits, int formatVersion, bool flagChoices, bool frameAllowed)
         : version2(formatVersion >= 2),
@@ -263,8 +295,16 @@ int roughBits(GridPoint r) {
 }
 int frameAdvantage(const LocalFrame& frame, GridPoint edge) { return roughBits(edge) - roughBits(toFrame(frame, edge)); }
 
+// What a flag's context takes from the candidates alone: its distance
+// bucket and whether it is crowded.
+int flagContextOf(const Predictions& p, int c) {
+    int8_t& known = p.flagContext[c];
+    if (known < 0) known = int8_t(2 * distanceBucket(p, c) + crowded(p, c));
+    return known;
+}
 BitModel& flagOf(CodingState& s, const Predictions& p, int c) {
-    return s.isChoice[c][distanceBucket(p, c)][s.previousChoice == uint32_t(c) ? 1 : 0][crowded(p, c)];
+    const int context = flagContextOf(p, c);
+    return s.isChoice[c][context >> 1][s.previousChoice == uint32_t(c) ? 1 : 0][context & 1];
 }
 
 // What coding the next vertex from each candidate costs under the current
@@ -274,7 +314,7 @@ BitModel& flagOf(CodingState& s, const Predictions& p, int c) {
 // here: the choice is transmitted, the decoder never repeats this.) The
 // encoder writes format 2 only.
 struct Pricing {
-    ResidualCosts axis[kResidualGroups][3];
+    const ResidualCosts* axis[kResidualGroups][3];
     double choice[kMaxCandidates];
     bool version2;
     bool frameNow;
@@ -282,7 +322,7 @@ struct Pricing {
     Pricing(CodingState& s, const Predictions& p, const int (*contexts)[3])
         : version2(s.version2), frameNow(s.frameNow()), frame(p.frame) {
         for (int g = 0; g < kResidualGroups; ++g)
-            for (int a = 0; a < 3; ++a) axis[g][a] = ResidualCosts(s.axis[g][a], contexts[g][a]);
+            for (int a = 0; a < 3; ++a) axis[g][a] = &s.residualCosts(g, a, contexts[g][a]);
         if (!s.choiceFlags) {
             const AdaptiveFrequencies& model = s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
             const double total = model.totalCount();
@@ -305,9 +345,9 @@ struct Pricing {
     }
     double residual(GridPoint r, uint32_t c) const {
         const bool inFrame = framed(frameNow, c);
-        const ResidualCosts* a = axis[residualGroup(version2, c)];
+        const ResidualCosts* const* a = axis[residualGroup(version2, c)];
         if (inFrame) r = toFrame(frame, r);
-        return a[0](r.x) + a[1](r.y) + a[2](r.z);
+        return (*a[0])(r.x) + (*a[1])(r.y) + (*a[2])(r.z);
     }
 };
 
@@ -383,6 +423,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     const int group = residualGroup(s.version2, choice);
     for (int a = 0; a < 3; ++a) {
         const int32_t coded = codeResidual(io, s.axis[group][a], contexts[group][a], in[a]);
+        ++s.residualsCoded[group][a][contexts[group][a]];
         s.magnitude[3 * size_t(self) + size_t(a)] = magnitudeOf(coded);
         out[a] = coded;
     }
@@ -450,9 +491,12 @@ constexpr size_t kMaxNeighboursLooked = 32;
 // choice). The decoder needs none of this: it reads the tree's shape from
 // the child counts. A minimum spanning tree orders by edge length; this
 // orders by how well a vertex can be predicted. Returns child lists of
-// input vertices, in coding order.
+// input vertices, in coding order, and in `choices` the candidate each
+// vertex is coded from, by preorder index: the pick codeTree would make,
+// under the same models, so codeTree need not price the candidates again.
 std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>& grid, const NeighbourGraph& graph,
-                                                     int cellBits, bool flagChoices, bool frame) {
+                                                     int cellBits, bool flagChoices, bool frame,
+                                                     std::vector<uint32_t>& choices) {
     const size_t n = grid.size() / 3;
     std::vector<std::vector<uint32_t>> children(n);
     std::vector<uint8_t> done(n, 0);
@@ -469,6 +513,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
         uint32_t vertex, decoded;
     };
     std::vector<Frame> stack;
+    choices.assign(n, kNotChosen);
     uint32_t self = 0;
     for (uint32_t root = 0; root < n; ++root) {
         if (done[root]) continue;
@@ -506,6 +551,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
             s.begin(top.decoded);
             const GridPoint at = gridPointOf(grid, next);
             codeChild(io, s, self, top.decoded, p, at, nextPick.candidate);
+            choices[self] = nextPick.candidate;
             s.place(self, at);
             stack.push_back({next, self++});
         }
@@ -515,10 +561,13 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
 
 // The tree's section: the cell size, how the predictor choice is coded,
 // then each vertex in preorder (a root raw, any other as a predicted
-// residual) with its child count.
+// residual) with its child count. `choices`, when given, holds the
+// candidate each vertex is coded from (by preorder index), else each is
+// picked here.
 std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int cellBits,
                               const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order,
-                              bool flagChoices, bool frame, uint64_t& framedResiduals) {
+                              const std::vector<uint32_t>* choices, bool flagChoices, bool frame,
+                              uint64_t& framedResiduals) {
     const size_t n = order.size();
     RangeEncoder coder;
     Writer io{coder};
@@ -539,7 +588,7 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
         if (parent == kNoVertex) {
             for (int32_t c : {at.x, at.y, at.z}) coder.encodeWideBits(uint32_t(c), bits);
         } else {
-            codeChild(io, s, self, parent, at);
+            codeChild(io, s, self, parent, predict(s, self, parent), at, choices ? (*choices)[self] : kNotChosen);
         }
         s.place(self, at);
         codeChildCount(io, s, uint32_t(children[vertex].size()));
@@ -565,10 +614,11 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     const NearestNeighbours nearest = nearestNeighbours(grid, index, kNeighbours);
     const int cellBits = cellBitsFor(nearest.spacing, bits);
     GeometryEncoding best;
-    auto keepSmaller = [&](const std::vector<std::vector<uint32_t>>& children, bool flagChoices, bool frame) {
+    auto keepSmaller = [&](const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>* choices,
+                           bool flagChoices, bool frame) {
         std::vector<uint32_t> order = preorder(children);
         uint64_t framed = 0;
-        std::vector<uint8_t> bytes = codeTree(grid, bits, cellBits, children, order, flagChoices, frame, framed);
+        std::vector<uint8_t> bytes = codeTree(grid, bits, cellBits, children, order, choices, flagChoices, frame, framed);
         if (best.bytes.empty() || bytes.size() < best.bytes.size()) best = {std::move(bytes), std::move(order), framed};
     };
     NeighbourGraph graph;
@@ -581,14 +631,17 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
             const bool frame = use == FrameUse::On;
             if (which != GeometryTree::SpanningTree) {  // grown under the coding it is written with
                 if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
-                keepSmaller(cheapestFirstTree(grid, graph, cellBits, flagChoices, frame), flagChoices, frame);
+                std::vector<uint32_t> choices;
+                const std::vector<std::vector<uint32_t>> children =
+                    cheapestFirstTree(grid, graph, cellBits, flagChoices, frame, choices);
+                keepSmaller(children, &choices, flagChoices, frame);
             }
             if (which != GeometryTree::CheapestFirst) {
                 if (spanning.empty()) {
                     spanning = spanningForest(grid, nearest);
                     orderChildrenForPrediction(grid, spanning);
                 }
-                keepSmaller(spanning, flagChoices, frame);
+                keepSmaller(spanning, nullptr, flagChoices, frame);
             }
         }
     }
