@@ -200,8 +200,11 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
 
 // Codes the vertex set with the given coder (lowBits > 0: Refine), numbers
 // the cut mesh in its decoded order and encodes the connectivity.
+// `trials` (may be null): what an earlier call worked out on the same grid
+// (refineGeometryEstimate's trees).
 Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
-                           const EncodeOptions& options, int lowBits, ProgressReporter& progress) {
+                           const EncodeOptions& options, int lowBits, ProgressReporter& progress,
+                           GeometryTreeTrials* trials = nullptr) {
     progress.stage("coding vertices", 0.01);
     NumberedMesh numbered;
     numbered.lowBits = lowBits;
@@ -209,12 +212,12 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
     const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : prepared.quantized;
     // options.geometry is Refine exactly when lowBits > 0 (encodeConnectivity).
     const GeometryCoderEntry* coder = geometryCoderOf(options.geometry);
-    GeometryEncoding encoding = coder->encode(vertexGrid, options.bits - lowBits, options.index);
+    GeometryEncoding encoding = coder->encode(vertexGrid, options.bits - lowBits, options.index, trials);
     if (const GeometryCoderEntry* fallback = coder->fallback) {
         // Scattered points (a soup of random triangles) predict no better
         // than raw bits: keep whichever section is smaller (the fallback's
         // on a tie).
-        GeometryEncoding alternative = fallback->encode(vertexGrid, options.bits - lowBits, options.index);
+        GeometryEncoding alternative = fallback->encode(vertexGrid, options.bits - lowBits, options.index, nullptr);
         if (alternative.bytes.size() <= encoding.bytes.size()) {
             coder = fallback;
             encoding = std::move(alternative);
@@ -307,12 +310,13 @@ constexpr double kRefineMinimumGain = kAutoRefineMinimumGainPercent / 100.0;
 // Refine's vertex bits without the traversal: the tree over the coarse
 // grid, and the low bits predicted across the input's triangles (the
 // traversal rebuilds them in another order, which changes the refinement's
-// size little). Decides whether a whole refine attempt is worth making.
+// size little). Decides whether a whole refine attempt is worth making; the
+// trees it grows and codes are left in `trials` for that attempt.
 size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::vector<uint32_t>& triangles, int bits,
-                              int lowBits, NeighbourIndex index) {
+                              int lowBits, NeighbourIndex index, GeometryTreeTrials& trials) {
     const GeometryEncoding tree =
         encodeGeometryTree(coarsenGrid(quantized, lowBits), bits - lowBits, index, GeometryTree::CheapestFirst,
-                           ChoiceCoding::Smaller, FrameUse::On);  // as refine codes it: both ways (two trees grown)
+                           ChoiceCoding::Smaller, FrameUse::On, &trials);  // as refine codes it: both ways (two trees grown)
     std::vector<uint32_t> decodedIndex(tree.order.size());
     std::vector<int32_t> fine(quantized.size());
     for (size_t d = 0; d < tree.order.size(); ++d) {
@@ -341,9 +345,11 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         // so refine can win only where its vertex bits alone save the gain
         // asked of it: the estimate spares the whole attempt elsewhere
         // (venus, casting, anchor).
-        const size_t estimate = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, lowBits, options.index);
+        GeometryTreeTrials trials;
+        const size_t estimate =
+            refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, lowBits, options.index, trials);
         if (double(treeGeometry) - double(estimate) < kRefineMinimumGain * double(treeTotal)) continue;
-        Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, lowBits, progress);
+        Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, lowBits, progress, &trials);
         if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
             best = std::move(refined);
     }

@@ -34,7 +34,10 @@ struct GeometryCoderEntry {
 
     // Encoder, first pass: grid holds the coordinates to code (3 per vertex,
     // input order) at `bits` bits. The section bytes and the decoded order.
-    GeometryEncoding (*encode)(const std::vector<int32_t>& grid, int bits, NeighbourIndex index);
+    // `trials` (may be null) carries a tree coder's work on the same grid
+    // from one call to the next (GeometryTreeTrials).
+    GeometryEncoding (*encode)(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
+                               GeometryTreeTrials* trials);
     // The coder whose section the encoder keeps instead when it is no larger
     // (scattered points predict no better than raw bits), or nullptr.
     const GeometryCoderEntry* fallback;

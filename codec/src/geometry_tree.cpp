@@ -610,42 +610,62 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
 // dinosaur-24k 14.05 -> 13.67), and on some artist meshes (hero 21.29 ->
 // 20.91).
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
-                                    GeometryTree which, ChoiceCoding choices, FrameUse frames) {
-    const NearestNeighbours nearest = nearestNeighbours(grid, index, kNeighbours);
+                                    GeometryTree which, ChoiceCoding choices, FrameUse frames,
+                                    GeometryTreeTrials* trials) {
+    GeometryTreeTrials own;
+    if (!trials) trials = &own;
+    if (trials->nearest && (trials->vertexCount != grid.size() / 3 || trials->bits != bits))
+        throw Error(ErrorKind::Internal, "internal error: geometry tree trials reused for another grid");
+    if (!trials->nearest) {
+        trials->vertexCount = grid.size() / 3;
+        trials->bits = bits;
+        trials->nearest = std::make_shared<const NearestNeighbours>(nearestNeighbours(grid, index, kNeighbours));
+    }
+    const NearestNeighbours& nearest = *trials->nearest;
     const int cellBits = cellBitsFor(nearest.spacing, bits);
-    GeometryEncoding best;
-    auto keepSmaller = [&](const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>* choices,
-                           bool flagChoices, bool frame) {
-        std::vector<uint32_t> order = preorder(children);
-        uint64_t framed = 0;
-        std::vector<uint8_t> bytes = codeTree(grid, bits, cellBits, children, order, choices, flagChoices, frame, framed);
-        if (best.bytes.empty() || bytes.size() < best.bytes.size()) best = {std::move(bytes), std::move(order), framed};
+    GeometryEncoding* best = nullptr;
+    // Codes one way, unless an earlier call did.
+    auto trial = [&](bool cheapestFirst, bool flagChoices, bool frame, auto growTree) {
+        const int key = (cheapestFirst ? 4 : 0) + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
+        auto found = trials->coded.find(key);
+        if (found == trials->coded.end()) {
+            std::vector<uint32_t> choices;
+            const std::vector<std::vector<uint32_t>>& children = growTree(flagChoices, frame, choices);
+            GeometryEncoding coded;
+            coded.order = preorder(children);
+            coded.bytes = codeTree(grid, bits, cellBits, children, coded.order, cheapestFirst ? &choices : nullptr,
+                                   flagChoices, frame, coded.framedResiduals);
+            found = trials->coded.emplace(key, std::move(coded)).first;
+        }
+        if (!best || found->second.bytes.size() < best->bytes.size()) best = &found->second;
     };
     NeighbourGraph graph;
-    std::vector<std::vector<uint32_t>> spanning;
+    std::vector<std::vector<uint32_t>> grown, spanning;
+    auto cheapestFirst = [&](bool flagChoices, bool frame,
+                             std::vector<uint32_t>& choices) -> const std::vector<std::vector<uint32_t>>& {
+        if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
+        grown = cheapestFirstTree(grid, graph, cellBits, flagChoices, frame, choices);
+        return grown;
+    };
+    auto spanningTree = [&](bool, bool, std::vector<uint32_t>&) -> const std::vector<std::vector<uint32_t>>& {
+        if (spanning.empty()) {
+            spanning = spanningForest(grid, nearest);
+            orderChildrenForPrediction(grid, spanning);
+        }
+        return spanning;
+    };
     for (ChoiceCoding coding : {ChoiceCoding::Flags, ChoiceCoding::Symbol}) {
         if (choices != ChoiceCoding::Smaller && choices != coding) continue;
         const bool flagChoices = coding == ChoiceCoding::Flags;
         for (FrameUse use : {FrameUse::On, FrameUse::Off}) {
             if (frames != FrameUse::Smaller && frames != use) continue;
             const bool frame = use == FrameUse::On;
-            if (which != GeometryTree::SpanningTree) {  // grown under the coding it is written with
-                if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
-                std::vector<uint32_t> choices;
-                const std::vector<std::vector<uint32_t>> children =
-                    cheapestFirstTree(grid, graph, cellBits, flagChoices, frame, choices);
-                keepSmaller(children, &choices, flagChoices, frame);
-            }
-            if (which != GeometryTree::CheapestFirst) {
-                if (spanning.empty()) {
-                    spanning = spanningForest(grid, nearest);
-                    orderChildrenForPrediction(grid, spanning);
-                }
-                keepSmaller(spanning, nullptr, flagChoices, frame);
-            }
+            // The cheapest-first tree is grown under the coding it is written with.
+            if (which != GeometryTree::SpanningTree) trial(true, flagChoices, frame, cheapestFirst);
+            if (which != GeometryTree::CheapestFirst) trial(false, flagChoices, frame, spanningTree);
         }
     }
-    return best;
+    return trials == &own ? std::move(*best) : *best;
 }
 
 std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {

@@ -10,6 +10,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <vector>
 
 #include "drm/drm.h"
@@ -32,11 +34,32 @@ enum class ChoiceCoding { Smaller, Flags, Symbol };
 // frame (format 3's bit G); by default both are tried.
 enum class FrameUse { Smaller, On, Off };
 
+struct NearestNeighbours;
+
+// What encodeGeometryTree has worked out for one grid: its near neighbours
+// and every section it coded, by tree, choice coding and frame. An encoder
+// that codes the same grid twice (refine's estimate, then refine's attempt
+// on the same coarse grid) passes the same trials to both, and nothing is
+// grown or coded twice; the section kept is the one a single call would
+// keep.
+struct GeometryTreeTrials {
+    size_t vertexCount = 0;  // of the grid they are for (checked)
+    int bits = 0;
+    std::shared_ptr<const NearestNeighbours> nearest;
+    std::map<int, GeometryEncoding> coded;  // by trialKey (geometry_tree.cpp)
+};
+
+// Codes the grid with each tree, choice coding and frame asked for and
+// returns the smallest section (the first of equal ones, in the order
+// cheapest-first then spanning tree, within flags then one symbol, within
+// frame on then off). `trials`, when given, holds what earlier calls on
+// the same grid worked out, and gets what this one works out.
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     NeighbourIndex index = NeighbourIndex::Auto,
                                     GeometryTree tree = GeometryTree::Smaller,
                                     ChoiceCoding choices = ChoiceCoding::Smaller,
-                                    FrameUse frames = FrameUse::Smaller);
+                                    FrameUse frames = FrameUse::Smaller,
+                                    GeometryTreeTrials* trials = nullptr);
 
 // Reads a section in the syntax of format version 1, 2 or 3 (docs/format.md;
 // the encoder writes kFileFormatVersion's). Throws Error on data that does

@@ -112,6 +112,33 @@ TEST(GeometryTree, ReadsASectionInItsFormatVersionsSyntax) {
     }
 }
 
+// Trials carried from one call to the next on the same grid (refine's
+// estimate, then its attempt) change nothing in what is kept: the second
+// call gives the very section a single call gives, and a call on another
+// grid with them is refused.
+TEST(GeometryTree, TrialsCarriedOverKeepTheSameSection) {
+    for (const char* name : {"fandisk.ply", "bunny-lres.ply", "torus.ply"}) {
+        SCOPED_TRACE(name);
+        const std::vector<int32_t> grid = gridOf(name, 12);
+        const GeometryEncoding single = encodeGeometryTree(grid, 12);
+        GeometryTreeTrials trials;
+        const GeometryEncoding cheapest = encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::CheapestFirst,
+                                                             ChoiceCoding::Smaller, FrameUse::Smaller, &trials);
+        EXPECT_EQ(trials.coded.size(), 4u);  // flags and one symbol, each with and without the frame
+        EXPECT_EQ(cheapest.bytes, encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::CheapestFirst).bytes);
+        const GeometryEncoding carried = encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::Smaller,
+                                                            ChoiceCoding::Smaller, FrameUse::Smaller, &trials);
+        EXPECT_EQ(trials.coded.size(), 8u);
+        EXPECT_EQ(carried.bytes, single.bytes);
+        EXPECT_EQ(carried.order, single.order);
+        EXPECT_EQ(carried.framedResiduals, single.framedResiduals);
+        const std::vector<int32_t> other(grid.begin(), grid.end() - 3);
+        EXPECT_THROW(encodeGeometryTree(other, 12, NeighbourIndex::Auto, GeometryTree::Smaller, ChoiceCoding::Smaller,
+                                        FrameUse::Smaller, &trials),
+                     Error);
+    }
+}
+
 // Format 3's local frame is used where it serves: on a scan (the frame
 // codes the tree edges from the parent on bunny-lres) but not everywhere
 // (the grid's axes still code some), and the section decodes either way.
