@@ -624,6 +624,8 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     const NearestNeighbours& nearest = *trials->nearest;
     const int cellBits = cellBitsFor(nearest.spacing, bits);
     GeometryEncoding* best = nullptr;
+    NeighbourGraph graph;
+    std::vector<std::vector<uint32_t>> grown, spanning;
     // Codes one way, unless an earlier call did.
     auto trial = [&](bool cheapestFirst, bool flagChoices, bool frame, auto growTree) {
         const int key = (cheapestFirst ? 4 : 0) + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
@@ -636,11 +638,10 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
             coded.bytes = codeTree(grid, bits, cellBits, children, coded.order, cheapestFirst ? &choices : nullptr,
                                    flagChoices, frame, coded.framedResiduals);
             found = trials->coded.emplace(key, std::move(coded)).first;
+            std::vector<std::vector<uint32_t>>().swap(grown);  // the spanning forest is kept for the next trial
         }
         if (!best || found->second.bytes.size() < best->bytes.size()) best = &found->second;
     };
-    NeighbourGraph graph;
-    std::vector<std::vector<uint32_t>> grown, spanning;
     auto cheapestFirst = [&](bool flagChoices, bool frame,
                              std::vector<uint32_t>& choices) -> const std::vector<std::vector<uint32_t>>& {
         if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
