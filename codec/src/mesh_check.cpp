@@ -1,5 +1,7 @@
 #include "mesh_check.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 
 #include "common.h"
@@ -14,10 +16,21 @@ std::string faceText(const std::vector<uint32_t>& t, size_t f) {
 
 }  // namespace
 
+uint32_t MeshTopology::faceOf(uint32_t a, uint32_t b) const {
+    const Outgoing* first = out.data() + start[a];
+    const Outgoing* last = out.data() + start[a + 1];
+    // A few edges leave most vertices; a hub's are searched by halving.
+    if (last - first > 16)
+        first = std::lower_bound(first, last, b, [](const Outgoing& e, uint32_t to) { return e.to < to; });
+    for (; first != last && first->to <= b; ++first)
+        if (first->to == b) return first->face;
+    return kNoIndex;
+}
+
 uint32_t MeshTopology::apexAcross(uint32_t a, uint32_t b, uint32_t* face) const {
-    const uint32_t g = faceOfHalfEdge.find(b, a);
+    const uint32_t g = faceOf(b, a);
     if (face) *face = g;
-    if (g == HalfEdgeMap::kAbsent) return kNoVertex;
+    if (g == kNoIndex) return kNoVertex;
     const uint32_t* t = triangles->data() + 3 * size_t(g);
     for (int k = 0; k < 3; ++k)
         if (t[k] == b) return t[(k + 2) % 3];
@@ -59,18 +72,46 @@ std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, 
 
     MeshTopology& topology = *out;
     topology.triangles = &t;
-    topology.faceOfHalfEdge.reset(t.size());
-    for (size_t f = 0; f < faceCount; ++f) {
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = t[3 * f + k], b = t[3 * f + (k + 1) % 3];
-            if (!topology.faceOfHalfEdge.insert(a, b, uint32_t(f))) {
-                const uint32_t g = topology.faceOfHalfEdge.find(a, b);
-                return (faceText(t, f) + " and " + faceText(t, g) + " both contain the directed edge " +
-                            std::to_string(a) + "->" + std::to_string(b) +
-                            ": the mesh is non-manifold or inconsistently oriented there");
+    std::vector<uint32_t>& start = topology.start;
+    std::vector<MeshTopology::Outgoing>& edges = topology.out;
+    start.assign(vertexCount + 1, 0);
+    for (uint32_t v : t) ++start[size_t(v) + 1];
+    for (size_t v = 0; v < vertexCount; ++v) start[v + 1] += start[v];
+    edges.resize(t.size());
+    {
+        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        for (size_t f = 0; f < faceCount; ++f)
+            for (int k = 0; k < 3; ++k) edges[fill[t[3 * f + k]]++] = {t[3 * f + (k + 1) % 3], uint32_t(f)};
+    }
+    // Each vertex's edges by far end, then face; a far end met twice is a
+    // directed edge in two faces. The message names the pair a table built
+    // face by face would meet first: the later face smallest, and within it
+    // the first corner.
+    size_t firstClash = SIZE_MAX, clashWith = 0;
+    uint32_t clashFrom = 0, clashTo = 0;
+    for (size_t v = 0; v < vertexCount; ++v) {
+        MeshTopology::Outgoing* first = edges.data() + start[v];
+        MeshTopology::Outgoing* last = edges.data() + start[v + 1];
+        std::sort(first, last, [](const MeshTopology::Outgoing& x, const MeshTopology::Outgoing& y) {
+            return x.to != y.to ? x.to < y.to : x.face < y.face;
+        });
+        for (const MeshTopology::Outgoing* e = first; e + 1 < last; ++e) {
+            if (e[1].to != e->to) continue;
+            int corner = 0;
+            while (t[3 * size_t(e[1].face) + corner] != v) ++corner;
+            const size_t order = 3 * size_t(e[1].face) + corner;
+            if (order < firstClash) {
+                firstClash = order;
+                clashWith = e->face;
+                clashFrom = uint32_t(v);
+                clashTo = e->to;
             }
         }
     }
+    if (firstClash != SIZE_MAX)
+        return (faceText(t, firstClash / 3) + " and " + faceText(t, clashWith) + " both contain the directed edge " +
+                std::to_string(clashFrom) + "->" + std::to_string(clashTo) +
+                ": the mesh is non-manifold or inconsistently oriented there");
 
     // Corners (f, k) around one vertex are joined when their faces share an
     // edge at that vertex; a vertex whose corners fall into two or more sets
@@ -79,16 +120,16 @@ std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, 
     for (size_t f = 0; f < faceCount; ++f) {
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = t[3 * f + k], next = t[3 * f + (k + 1) % 3];
-            const uint32_t g = topology.faceOfHalfEdge.find(next, v);
-            if (g == HalfEdgeMap::kAbsent) continue;
+            const uint32_t g = topology.faceOf(next, v);
+            if (g == kNoIndex) continue;
             for (int j = 0; j < 3; ++j)
                 if (t[3 * size_t(g) + j] == v) sets.join(uint32_t(3 * f + k), uint32_t(3 * size_t(g) + j));
         }
     }
-    std::vector<uint32_t> fanOf(vertexCount, HalfEdgeMap::kAbsent);
+    std::vector<uint32_t> fanOf(vertexCount, kNoIndex);
     for (size_t c = 0; c < t.size(); ++c) {
         const uint32_t v = t[c], fan = sets.root(uint32_t(c));
-        if (fanOf[v] == HalfEdgeMap::kAbsent) fanOf[v] = fan;
+        if (fanOf[v] == kNoIndex) fanOf[v] = fan;
         else if (fanOf[v] != fan)
             return ("vertex " + std::to_string(v) +
                         " is non-manifold: its faces form more than one fan (first seen at " + faceText(t, c / 3) +
