@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
@@ -164,6 +165,44 @@ TEST(LoadMesh, StlIsWeldedOnIdenticalPositionsInOrderOfFirstUse) {
     const drm::vcgio::LoadedMesh fromBinary = loadMesh(dir.file("b.stl"));
     EXPECT_EQ(fromBinary.mesh.positions, ascii.mesh.positions);
     EXPECT_EQ(fromBinary.mesh.triangles, ascii.mesh.triangles);
+}
+
+// The plainest binary layout (float x, y, z; a uchar-counted int list of
+// three corners) is copied straight in, not through vcglib: it must give
+// what vcglib gives for the same mesh, here read from an ASCII copy, and a
+// file of that layout with a polygon still goes to vcglib, which splits it.
+TEST(LoadMesh, PlainBinaryPlyReadsAsVcglibReadsItsAsciiCopy) {
+    ScratchDir dir;
+    for (const char* name : {"bunny-lres.ply", "fandisk.ply", "soup.ply"}) {
+        SCOPED_TRACE(name);
+        const drm::vcgio::LoadedMesh plain = loadMesh(std::string(DRM_TEST_DATA_DIR) + "/" + name);
+        ASSERT_GT(plain.mesh.faceCount(), 0u);
+        std::string ascii = asciiPlyHeader(plain.mesh.vertexCount(), plain.mesh.faceCount());
+        char number[32];
+        for (size_t i = 0; i < plain.mesh.positions.size(); ++i) {
+            std::snprintf(number, sizeof number, "%.9g", double(plain.mesh.positions[i]));
+            ascii += number;
+            ascii += i % 3 == 2 ? "\n" : " ";
+        }
+        ascii += faceLines(plain.mesh.triangles, "3 ", 0);
+        writeText(dir.file("copy.ply"), ascii);
+        const drm::vcgio::LoadedMesh viaVcglib = loadMesh(dir.file("copy.ply"));
+        ASSERT_EQ(viaVcglib.mesh.positions.size(), plain.mesh.positions.size());
+        EXPECT_EQ(std::memcmp(viaVcglib.mesh.positions.data(), plain.mesh.positions.data(), 4 * plain.mesh.positions.size()), 0);
+        EXPECT_EQ(viaVcglib.mesh.triangles, plain.mesh.triangles);
+        EXPECT_EQ(viaVcglib.notes, plain.notes);
+    }
+    // A quad in the plain layout: split by vcglib, with its note.
+    std::string quad = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const float corners[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    quad.append(reinterpret_cast<const char*>(corners), sizeof corners);
+    quad.push_back(char(4));
+    for (int32_t v : {0, 1, 2, 3}) quad.append(reinterpret_cast<const char*>(&v), 4);  // little-endian hosts only
+    writeText(dir.file("quad.ply"), quad);
+    const drm::vcgio::LoadedMesh split = loadMesh(dir.file("quad.ply"));
+    EXPECT_EQ(split.mesh.faceCount(), 2u);
+    EXPECT_TRUE(hasNoteContaining(split, "polygons were split"));
 }
 
 TEST(SavePly, RoundTripsBitExactlyThroughLoadMesh) {

@@ -32,7 +32,20 @@ uint64_t preflightOff(const std::string& text);
 // element, or -1 if the file has none (vcglib may still read tristrips).
 // If `properties` is given, it receives the header's properties as
 // "ELEMENT.NAME" in header order.
-int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>* properties = nullptr);
+//
+// If `plain` is given, it says whether the file has the plainest layout,
+// binary little-endian with float x, y, z per vertex and a list uchar
+// int|uint vertex_indices of exactly three per face, nothing else (the
+// corpus's), and where its two elements start: loadPly copies such a body
+// straight in, where vcglib's reader parses it field by field (a sixth of
+// `drm encode`'s instructions on bunny).
+struct PlainPly {
+    bool plain = false;
+    size_t vertexStart = 0, faceStart = 0;
+    uint64_t vertexCount = 0, faceCount = 0;
+};
+int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>* properties = nullptr,
+                     PlainPly* plain = nullptr);
 
 // Binary STL must be exactly 84 + 50 * triangle count bytes long; anything
 // else must be plain ASCII text starting with "solid" and holding a newline.

@@ -146,9 +146,36 @@ void checkTriangleCount(uint64_t expected, const drm::Mesh& mesh) {
                     " triangles the file describes (unsupported property types?)");
 }
 
+// A little-endian 32-bit word at p, on any host.
+uint32_t word(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
+
+// PlainPly's body, already walked by the preflight (every face a triangle
+// of existing vertices): what vcglib's reader makes of it, without it.
+LoadedMesh readPlainPly(const std::vector<uint8_t>& bytes, const PlainPly& plain) {
+    LoadedMesh loaded;
+    drm::Mesh& mesh = loaded.mesh;
+    mesh.positions.resize(3 * plain.vertexCount);
+    const uint8_t* at = bytes.data() + plain.vertexStart;
+    for (size_t i = 0; i < mesh.positions.size(); ++i, at += 4) {
+        const uint32_t bits = word(at);
+        std::memcpy(&mesh.positions[i], &bits, 4);
+    }
+    mesh.triangles.resize(3 * plain.faceCount);
+    at = bytes.data() + plain.faceStart;
+    for (size_t f = 0; f < plain.faceCount; ++f, at += 13)
+        for (int k = 0; k < 3; ++k) mesh.triangles[3 * f + size_t(k)] = word(at + 1 + 4 * k);
+    return loaded;
+}
+
 LoadedMesh loadPly(const std::string& path) {
     std::vector<std::string> properties;
-    const int64_t expectedTriangles = preflightPly(readFileBytes(path), &properties);
+    PlainPly plain;
+    int64_t expectedTriangles = 0;
+    {
+        const std::vector<uint8_t> bytes = readFileBytes(path);
+        expectedTriangles = preflightPly(bytes, &properties, &plain);
+        if (plain.plain && plain.faceCount > 0) return readPlainPly(bytes, plain);
+    }
     LoadingMesh m;
     int mask = 0;
     const int status = vcg::tri::io::ImporterPLY<LoadingMesh>::Open(m, path.c_str(), mask);

@@ -126,9 +126,26 @@ int64_t listLimit(const std::string& element, const std::string& property) {
     return 0;
 }
 
+// Whether the header describes PlainPly's layout (the body not yet checked).
+bool plainLayout(Encoding encoding, const std::vector<Element>& elements) {
+    if (encoding != Encoding::LittleEndian || elements.size() != 2) return false;
+    const Element& vertex = elements[0];
+    const Element& face = elements[1];
+    if (vertex.name != "vertex" || vertex.properties.size() != 3 || face.name != "face" || face.properties.size() != 1)
+        return false;
+    const char* axes[3] = {"x", "y", "z"};
+    for (int k = 0; k < 3; ++k) {
+        const Property& p = vertex.properties[size_t(k)];
+        if (p.name != axes[k] || p.countType || p.type->integer || p.type->size != 4) return false;
+    }
+    const Property& corners = face.properties[0];
+    return corners.name == "vertex_indices" && corners.countType && corners.countType->size == 1 &&
+           !corners.countType->isSigned && corners.type->integer && corners.type->size == 4;
+}
+
 }  // namespace
 
-int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>* properties) {
+int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>* properties, PlainPly* plain) {
     // Header: lines up to "end_header".
     const std::string marker = "end_header";
     size_t position = 0, lineNumber = 0;
@@ -237,6 +254,17 @@ int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>
                                     std::to_string(vertexCount) + " vertices");
                 }
             }
+        }
+    }
+    if (plain) {
+        *plain = PlainPly();
+        // Every face a triangle: then the faces make as many triangles.
+        if (plainLayout(encoding, elements) && triangles >= 0 && uint64_t(triangles) == elements[1].count) {
+            plain->plain = true;
+            plain->vertexCount = elements[0].count;
+            plain->faceCount = elements[1].count;
+            plain->vertexStart = position;
+            plain->faceStart = position + 12 * size_t(plain->vertexCount);
         }
     }
     return triangles;
