@@ -313,55 +313,99 @@ BitModel& flagOf(CodingState& s, const Predictions& p, int c) {
 // candidates of every vertex it might code next. (Floating point is fine
 // here: the choice is transmitted, the decoder never repeats this.) The
 // encoder writes format 2 only.
-struct Pricing {
-    const ResidualCosts* axis[kResidualGroups][3];
-    double choice[kMaxCandidates];
-    bool version2;
-    bool frameNow;
-    const LocalFrame& frame;
+//
+// Naming candidate c with flags costs the "no" flags of the candidates
+// before it, each in a context that takes work to find (flagContextOf), so
+// those costs are worked out only as far as a pick needs them
+// (bestPrediction): most picks are settled by the first few candidates.
+class Pricing {
+public:
     Pricing(CodingState& s, const Predictions& p, const int (*contexts)[3])
-        : version2(s.version2), frameNow(s.frameNow()), frame(p.frame) {
+        : s_(s), p_(p), version2_(s.version2), frameNow_(s.frameNow()) {
         for (int g = 0; g < kResidualGroups; ++g)
-            for (int a = 0; a < 3; ++a) axis[g][a] = &s.residualCosts(g, a, contexts[g][a]);
+            for (int a = 0; a < 3; ++a) axis_[g][a] = &s.residualCosts(g, a, contexts[g][a]);
         if (!s.choiceFlags) {
             const AdaptiveFrequencies& model = s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
             const double total = model.totalCount();
-            for (int c = 0; c < p.count; ++c) choice[c] = std::log2(total / model.countOf(uint32_t(c)));
+            for (int c = 0; c < p.count; ++c) choice_[c] = std::log2(total / model.countOf(uint32_t(c)));
+            known_ = p.count;  // one symbol: no cost grows with c, 0 bounds them all
             return;
         }
-        const int last = lastFlagged(p);
-        double noSoFar = 0;  // the "no" flags of the candidates before
-        for (int c = 0; c < p.count; ++c) {
-            if (c > last || repeatsEarlier(p, c)) {
-                choice[c] = 1e300;  // never picked: an equal candidate comes first
-            } else if (c == last) {
-                choice[c] = noSoFar;
+        last_ = lastFlagged(p);
+    }
+    double residual(GridPoint r, uint32_t c) const {
+        const bool inFrame = framed(frameNow_, c);
+        const ResidualCosts* const* a = axis_[residualGroup(version2_, c)];
+        if (inFrame) r = toFrame(p_.frame, r);
+        return (*a[0])(r.x) + (*a[1])(r.y) + (*a[2])(r.z);
+    }
+    // The cost of naming candidate c.
+    double choice(int c) const {
+        knowUpTo(c);
+        return choice_[c];
+    }
+    // A floor under the cost of naming any candidate from c on: the "no"
+    // flags of those before c (every later name pays them too).
+    double choiceFloor(int c) const {
+        if (!s_.choiceFlags) return 0;
+        knowUpTo(c - 1);
+        return c <= 0 ? 0 : noBefore_[c - 1];
+    }
+
+private:
+    void knowUpTo(int c) const {
+        for (; known_ <= c; ++known_) {
+            const int k = known_;
+            const double noSoFar = k == 0 ? 0 : noBefore_[k - 1];
+            if (k > last_ || repeatsEarlier(p_, k)) {
+                choice_[k] = 1e300;  // never picked: an equal candidate comes first
+                noBefore_[k] = noSoFar;
+            } else if (k == last_) {
+                choice_[k] = noSoFar;
+                noBefore_[k] = noSoFar;
             } else {
-                const BitModel& flag = flagOf(s, p, c);
-                choice[c] = noSoFar + flag.cost(1);
-                noSoFar += flag.cost(0);
+                const BitModel& flag = flagOf(s_, p_, k);
+                choice_[k] = noSoFar + flag.cost(1);
+                noBefore_[k] = noSoFar + flag.cost(0);
             }
         }
     }
-    double residual(GridPoint r, uint32_t c) const {
-        const bool inFrame = framed(frameNow, c);
-        const ResidualCosts* const* a = axis[residualGroup(version2, c)];
-        if (inFrame) r = toFrame(frame, r);
-        return (*a[0])(r.x) + (*a[1])(r.y) + (*a[2])(r.z);
-    }
+
+    CodingState& s_;
+    const Predictions& p_;
+    const ResidualCosts* axis_[kResidualGroups][3];
+    bool version2_;
+    bool frameNow_;
+    int last_ = 0;
+    // Worked out so far: candidates 0 .. known_ - 1; noBefore_[k], the "no"
+    // flags of candidates 0 .. k.
+    mutable int known_ = 0;
+    mutable double choice_[kMaxCandidates];
+    mutable double noBefore_[kMaxCandidates];
 };
 
-// The encoder's pick: the candidate whose residual and choice cost least,
-// and that cost in bits.
+// The encoder's pick: the candidate whose residual and choice cost least
+// (the first of equal ones), and that cost in bits.
 struct Pick {
     uint32_t candidate = 0;
     double bits = 1e300;
 };
 Pick bestPrediction(const Pricing& price, const Predictions& p, GridPoint actual) {
+    double residual[kMaxCandidates];
+    double leastFrom[kMaxCandidates + 1];  // the least residual of candidates c and on
+    leastFrom[p.count] = 1e300;
+    for (int c = p.count - 1; c >= 0; --c) {
+        residual[c] = price.residual(actual - p.candidate[c], uint32_t(c));
+        leastFrom[c] = std::min(residual[c], leastFrom[c + 1]);
+    }
     Pick best;
-    for (uint32_t c = 0; c < uint32_t(p.count); ++c) {
-        const double cost = price.residual(actual - p.candidate[c], c) + price.choice[c];
-        if (cost < best.bits) best = {c, cost};
+    for (int c = 0; c < p.count; ++c) {
+        // No candidate from c on can cost less than this (rounding is
+        // monotonic: a sum of larger terms is no smaller), and a tie keeps
+        // the earlier pick: the pick is the one pricing them all would make.
+        if (leastFrom[c] + price.choiceFloor(c) >= best.bits) break;
+        const double cost = residual[c] + price.choice(c);
+        if (cost < best.bits) best = {uint32_t(c), cost};
     }
     return best;
 }
