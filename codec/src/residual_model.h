@@ -54,28 +54,44 @@ int32_t codeResidual(Io& io, AxisModels& m, int context, int32_t r) {
     return negative ? -int32_t(value) : int32_t(value);
 }
 
-// The encoder's estimate of codeResidual's cost, in bits, for every bit
-// length at once: an encoder prices many residuals under the same models
-// (each candidate prediction of each possible next vertex), and the cost
-// depends on the length alone (an approximation: the sign and the bits
-// below the leading one count one bit each, though the sign and the first
-// two of those bits are coded adaptively).
+// The encoder's estimate of codeResidual's cost, in bits, by bit length:
+// an encoder prices many residuals under the same models (each candidate
+// prediction of each possible next vertex), and the cost depends on the
+// length alone (an approximation: the sign and the bits below the leading
+// one count one bit each, though the sign and the first two of those bits
+// are coded adaptively). Lengths are priced as they are first asked for,
+// shortest first (residuals rarely reach half of kMaxLength); the models
+// must not change while the prices are in use.
 class ResidualCosts {
 public:
     ResidualCosts() = default;
-    ResidualCosts(const AxisModels& m, int context) {
-        ofLength_[0] = m.zero[context].cost(1);
-        const double nonZero = m.zero[context].cost(0) + 1.0;  // and the sign, as one bit
-        double longer = 0;  // "longer than k" for every k below the length
-        for (int n = 1; n <= kMaxLength; ++n) {
-            ofLength_[n] = nonZero + (n - 1) + longer + (n < kMaxLength ? m.longer[context][n].cost(0) : 0.0);
-            if (n < kMaxLength) longer += m.longer[context][n].cost(1);
-        }
+    ResidualCosts(const AxisModels& m, int context) : models_(&m), context_(context) {}
+    double operator()(int32_t r) const {
+        const int n = bitLength(magnitudeOf(r));
+        if (n > priced_) priceUpTo(n);
+        return ofLength_[n];
     }
-    double operator()(int32_t r) const { return ofLength_[bitLength(magnitudeOf(r))]; }
 
 private:
-    double ofLength_[kMaxLength + 1] = {};
+    void priceUpTo(int n) const {
+        if (priced_ < 0) {
+            ofLength_[0] = models_->zero[context_].cost(1);
+            nonZero_ = models_->zero[context_].cost(0) + 1.0;  // and the sign, as one bit
+            longer_ = 0;
+            priced_ = 0;
+        }
+        for (int k = priced_ + 1; k <= n; ++k) {
+            ofLength_[k] = nonZero_ + (k - 1) + longer_ + (k < kMaxLength ? models_->longer[context_][k].cost(0) : 0.0);
+            if (k < kMaxLength) longer_ += models_->longer[context_][k].cost(1);  // "longer than k"
+        }
+        priced_ = n;
+    }
+
+    const AxisModels* models_ = nullptr;
+    int context_ = 0;
+    mutable int priced_ = -1;  // lengths 0 .. priced_ have their price
+    mutable double nonZero_ = 0, longer_ = 0;
+    mutable double ofLength_[kMaxLength + 1] = {};
 };
 
 }  // namespace drm
