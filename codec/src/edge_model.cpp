@@ -28,7 +28,10 @@ constexpr int kDisagreementOffset = kDistanceContexts;
 // Four: 3 and 5 are within 1% of it; 2 and 6 lose 2-8% (paper models).
 constexpr size_t kAngleOrdered = 4;
 // Format 5: edges ranked in the front order (front neighbours after rank 1)
-// have a context set of their own: rank 2 is likelier there.
+// have a context set of their own: rank 2 is likelier there (corpus whole
+// file geomean against format 4: 0.9961 with, 0.9968 without; adis16480
+// 7.57 against 7.61 bits per vertex, tray-bottom 6.09 against 6.26;
+// measured with the first forgetting rule below, every edge at shift 9).
 constexpr int kFrontOffset = 2 * kDistanceContexts;
 
 // The front order's score forgets 1/256 of itself on each edge where the

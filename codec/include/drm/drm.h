@@ -213,7 +213,7 @@ struct Levers {
     // they are follows which order would have coded the recent apexes in
     // fewer bits, which encoder and decoder both keep count of (sliver-rich
     // CAD meshes gain, smooth scans would lose). With confidence contexts,
-    // edges whose ranks the front order changed have contexts of their own.
+    // edges ranked in the front order have contexts of their own.
     bool frontNeighbours = true;
 
     static Levers none() { return Levers{false, false, false, false, false}; }
