@@ -59,6 +59,7 @@ py::dict statsDict(const drm::Stats& s, bool decoded) {
     levers["gap_closing"] = s.levers.gapClosing;
     levers["confidence_context"] = s.levers.confidenceContext;
     levers["angle_order"] = s.levers.angleOrder;
+    levers["front_neighbours"] = s.levers.frontNeighbours;
     d["levers"] = levers;
     d["header_bytes"] = s.headerBytes;
     d["connectivity_bytes"] = s.connectivityBytes;

@@ -60,6 +60,7 @@ std::string leverList(const drm::Levers& levers) {
     add(levers.gapClosing, "gap closing");
     add(levers.confidenceContext, "confidence contexts");
     add(levers.angleOrder, "angle order");
+    add(levers.frontNeighbours, "front neighbours");
     return out.empty() ? "none (the paper's method)" : out;
 }
 
@@ -93,7 +94,8 @@ void printJson(const std::string& path, const drm::Stats& s, bool ranks) {
     field("levers", "{\"topological_filter\": " + boolean(s.levers.topologicalFilter) +
                         ", \"gap_closing\": " + boolean(s.levers.gapClosing) +
                         ", \"confidence_context\": " + boolean(s.levers.confidenceContext) +
-                        ", \"angle_order\": " + boolean(s.levers.angleOrder) + "}");
+                        ", \"angle_order\": " + boolean(s.levers.angleOrder) +
+                        ", \"front_neighbours\": " + boolean(s.levers.frontNeighbours) + "}");
     field("header_bytes", number(s.headerBytes));
     field("connectivity_bytes", number(s.connectivityBytes));
     field("geometry_bytes", number(s.geometryBytes));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "admissibility.h"
+#include "gap_closing.h"
 #include "drm/drm.h"
 #include "predictor.h"
 #include "rank_search.h"
@@ -18,9 +19,9 @@ class SpatialIndex;
 
 struct EdgeForecast {
     FixedPoint prediction;
-    uint32_t preferred = kNoVertex;  // gap-closing vertex, rank 1 when present
+    uint32_t preferred = kNoVertex;  // gap-closing vertex, rank 1 when present (format 5 with the front lever: listed first in `nearest` instead)
     int context = 0;                     // coder context, < EdgeModel::contextCount()
-    std::vector<RankedVertex> nearest;   // the nearest candidates, in rank order (confidence / angle levers)
+    std::vector<RankedVertex> nearest;   // the listed candidates, in rank order (confidence / angle / front levers)
 };
 
 class EdgeModel {
@@ -44,14 +45,33 @@ public:
     // rule the decoder will apply).
     bool admissible(uint32_t v, const OpenEdge& edge) const { return admissible_(v, edge); }
     // Tells the model the apex of the last forecast edge, once known, so it
-    // can learn which candidate order serves this mesh.
+    // can learn which candidate order serves this mesh. After rankOf or
+    // vertexOfRank of that edge (the rank they gave is part of the lesson).
     void resolved(uint32_t apex);
+
+    // Format 5, front-neighbour lever: the ranks the apex of the last
+    // resolved edge had in the order without front neighbours (`plain`) and
+    // in the order with them (`front`), and whether that edge was ranked in
+    // the front order. Equal when the edge had no front neighbour to add,
+    // or when its apex had rank 1. plainListed: how many vertices the plain
+    // order listed ahead of the distance order (for tests).
+    struct OrderLesson {
+        uint32_t plain = 0, front = 0;
+        bool frontUsed = false;
+        uint32_t plainListed = 0;
+    };
+    const OrderLesson& lastLesson() const { return lesson_; }
 
 private:
     void orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& nearest) const;
     // The `count` admissible vertices nearest p: from the predictor's ball
     // (format 4), or from a search of their own.
     const std::vector<RankedVertex>& nearestCandidates(const FixedPoint& p, size_t count, const OpenEdge& edge);
+    // Format 5: the front order's list for the forecast edge, and which
+    // list ranks it; learnOrder keeps score after the apex is known.
+    void forecastFrontOrder(const OpenEdge& edge, const FanEnds& ends);
+    void learnOrder(uint32_t apex, const OpenEdge& edge);
+    void findExtras();
 
     const std::vector<int32_t>& grid_;
     int bits_;
@@ -68,6 +88,26 @@ private:
         uint32_t byDistance = kNoVertex, byAngle = kNoVertex;
     } disagreement_;
     uint32_t angleWins_ = 0, distanceWins_ = 0;
+
+    // Format 5, front neighbours (docs/format.md, "Format 5").
+    bool frontLever_;
+    // The forecast's list (nearest) holds the order used: the plain one,
+    // or the front order (its first, extra_, the rest); otherOrder_ then
+    // holds the plain one.
+    RankedVertex extra_[2];                  // front neighbours not in the plain order, by distance
+    size_t extraCount_ = 0;
+    uint32_t plainListed_ = 0;
+    bool extrasKnown_ = false;               // extra_ found for this edge (only when needed)
+    FanEnds ends_;
+    std::vector<RankedVertex> otherOrder_;
+    bool useFront_ = false;                  // this edge is ranked in the front order
+    OpenEdge edge_;                          // the forecast edge
+    uint32_t lastRank_ = 0;                 // what rankOf / vertexOfRank gave for the forecast edge
+    // Decayed sum of (plain order's cost - front order's cost) over the
+    // edges where the two differ, in 1/16 bits: the front order ranks the
+    // next edge while it is above zero.
+    int64_t frontAdvantage_ = 0;
+    OrderLesson lesson_;
 };
 
 }  // namespace drm

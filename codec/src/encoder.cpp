@@ -282,7 +282,8 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
     }
     Attempt best = encodeOnce(prepared, numbered, options, progress);
     const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
-                          options.levers.confidenceContext || options.levers.angleOrder;
+                          options.levers.confidenceContext || options.levers.angleOrder ||
+                          options.levers.frontNeighbours;
     if (options.tryWithoutLevers && anyLever && numbered.triangles.size() / 3 < kTryWithoutLeversBelowFaces) {
         EncodeOptions plain = options;
         plain.levers = Levers::none();

@@ -41,7 +41,8 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
                      (h.levers.gapClosing ? kFlagGapClosing : 0) |
                      (h.levers.confidenceContext ? kFlagConfidenceContext : 0) |
                      (h.levers.angleOrder ? kFlagAngleOrder : 0) | (h.keepsVertexOrder ? kFlagVertexOrder : 0) |
-                     (h.hasRepairs ? kFlagRepairs : 0) | (h.attributeSections > 0 ? kFlagAttributes : 0)));
+                     (h.hasRepairs ? kFlagRepairs : 0) | (h.attributeSections > 0 ? kFlagAttributes : 0) |
+                     (h.levers.frontNeighbours ? kFlagFrontNeighbours : 0)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
     out.u8(uint8_t(h.connectivityCoder));
@@ -57,15 +58,16 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     return std::move(out.buffer());
 }
 
-FileHeader decodeHeader(ByteReader& in) {
+FileHeader decodeHeader(ByteReader& in, int version) {
     FileHeader h;
     const uint16_t flags = in.u16("flags");
-    if (flags & ~kKnownFlags) throw Error(ErrorKind::Corrupt, "corrupt file: unknown header flags " + std::to_string(flags));
+    if (flags & ~(version >= 5 ? kKnownFlags : kKnownFlagsBefore5)) throw Error(ErrorKind::Corrupt, "corrupt file: unknown header flags " + std::to_string(flags));
     h.curvature = (flags & kFlagCurvature) != 0;
     h.levers.topologicalFilter = (flags & kFlagTopologicalFilter) != 0;
     h.levers.gapClosing = (flags & kFlagGapClosing) != 0;
     h.levers.confidenceContext = (flags & kFlagConfidenceContext) != 0;
     h.levers.angleOrder = (flags & kFlagAngleOrder) != 0;
+    h.levers.frontNeighbours = (flags & kFlagFrontNeighbours) != 0;
     h.keepsVertexOrder = (flags & kFlagVertexOrder) != 0;
     h.hasRepairs = (flags & kFlagRepairs) != 0;
     h.grid.bits = in.u8("quantization bits");
@@ -204,7 +206,7 @@ FileParts readFile(const uint8_t* data, size_t size) {
     size_t headerSize = 0;
     section("header", &headerPayload, &headerSize);
     ByteReader header(headerPayload, headerSize, "header", size_t(headerPayload - data));
-    parts.header = decodeHeader(header);
+    parts.header = decodeHeader(header, version);
     section("connectivity", &parts.connectivity, &parts.connectivitySize);
     section("geometry", &parts.geometry, &parts.geometrySize);
     if (parts.header.keepsVertexOrder) section("vertex order", &parts.vertexOrder, &parts.vertexOrderSize);

@@ -25,7 +25,9 @@ constexpr uint16_t kFlagAngleOrder = 16;
 constexpr uint16_t kFlagVertexOrder = 32;  // a fourth section holds the input vertex order
 constexpr uint16_t kFlagRepairs = 64;      // a repairs section undoes a manifold cut (repair_section.h)
 constexpr uint16_t kFlagAttributes = 128;  // attribute sections follow (attribute_sections.h)
-constexpr uint16_t kKnownFlags = 255;
+constexpr uint16_t kFlagFrontNeighbours = 256;  // format 5 on
+constexpr uint16_t kKnownFlagsBefore5 = 255;
+constexpr uint16_t kKnownFlags = 511;
 constexpr uint64_t kMaxAttributeSections = 32;
 
 struct FileHeader {

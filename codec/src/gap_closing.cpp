@@ -38,22 +38,30 @@ bool narrowerThan60(Vec3 at, Vec3 p, Vec3 q, double* cosine2) {
 
 }  // namespace
 
-uint32_t gapClosingVertex(const OpenEdge& edge, const std::vector<int32_t>& grid, const Admissibility& admissible) {
-    const Traversal& t = admissible.traversal();
+FanEnds fanEnds(const OpenEdge& edge, const Traversal& t) {
     // A fan piece of one triangle leaves the opposite vertex as the "gap"
     // vertex: that is the back face, not a gap.
-    const uint32_t atI = fanEnd(t, edge.vi, edge.opposite, false);
-    const uint32_t atJ = fanEnd(t, edge.vj, edge.opposite, true);
+    FanEnds ends;
+    ends.atI = fanEnd(t, edge.vi, edge.opposite, false);
+    ends.atJ = fanEnd(t, edge.vj, edge.opposite, true);
+    if (ends.atI == edge.opposite) ends.atI = kNoVertex;
+    if (ends.atJ == edge.opposite) ends.atJ = kNoVertex;
+    return ends;
+}
+
+uint32_t gapClosingVertex(const OpenEdge& edge, const FanEnds& ends, const std::vector<int32_t>& grid,
+                          const Admissibility& admissible) {
+    const uint32_t atI = ends.atI, atJ = ends.atJ;
     const Vec3 a = gridPoint(grid, edge.vi), b = gridPoint(grid, edge.vj);
     uint32_t best = kNoVertex;
     double bestCosine2 = 0;
     double cosine2 = 0;
-    if (atI != kNoVertex && atI != edge.opposite && admissible(atI, edge) &&
+    if (atI != kNoVertex && admissible(atI, edge) &&
         narrowerThan60(a, b, gridPoint(grid, atI), &cosine2)) {
         best = atI;
         bestCosine2 = cosine2;
     }
-    if (atJ != kNoVertex && atJ != edge.opposite && admissible(atJ, edge) &&
+    if (atJ != kNoVertex && admissible(atJ, edge) &&
         narrowerThan60(b, a, gridPoint(grid, atJ), &cosine2) && (best == kNoVertex || cosine2 > bestCosine2)) {
         best = atJ;
     }

@@ -14,9 +14,20 @@
 
 namespace drm {
 
+// The far vertices of the rebuilt fans around the edge's ends: walking
+// around vi (resp. vj) away from the edge, the far end of the fan's last
+// open edge. kNoVertex where the fan ends on a coded boundary, or where it
+// is the edge's own triangle alone (its far end is the opposite vertex).
+// These are the edge's front neighbours.
+struct FanEnds {
+    uint32_t atI = kNoVertex, atJ = kNoVertex;
+};
+FanEnds fanEnds(const OpenEdge& edge, const Traversal& traversal);
+
 // The admissible vertex that closes the narrower gap (under 60 degrees) at
-// either end of edge, or kNoVertex.
-uint32_t gapClosingVertex(const OpenEdge& edge, const std::vector<int32_t>& grid, const Admissibility& admissible);
+// either end of edge, or kNoVertex; ends as fanEnds gives them.
+uint32_t gapClosingVertex(const OpenEdge& edge, const FanEnds& ends, const std::vector<int32_t>& grid,
+                          const Admissibility& admissible);
 
 }  // namespace drm
 

@@ -4,13 +4,14 @@
 // of each older format version the library still reads stay, frozen, in a
 // folder of their own (v1/: written before the vertex coder's format 2;
 // v2/: before format 3's local frame; v3/: before format 4's nearest
-// candidates from the predictor's ball), so the decoder keeps reading what
-// users already have.
+// candidates from the predictor's ball; v4/: before format 5's front
+// neighbours), so the decoder keeps reading what users already have.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "drm/drm.h"
+#include "drm_sections.h"
 #include "drm_vcg/file_io.h"
 #include "drm_vcg/mesh_io.h"
 
@@ -33,6 +34,8 @@ TEST(Golden, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti");
 TEST(Golden, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc"); }
 TEST(Golden, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw"); }
 TEST(Golden, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine"); }
+// CAD slivers: the front order ranks a good part of the edges.
+TEST(Golden, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom"); }
 
 TEST(GoldenFormat1, Torus) { expectDecodesToGolden("torus", "/v1", 1); }
 TEST(GoldenFormat1, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v1", 1); }
@@ -55,5 +58,37 @@ TEST(GoldenFormat3, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefer
 TEST(GoldenFormat3, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v3", 3); }
 TEST(GoldenFormat3, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v3", 3); }
 TEST(GoldenFormat3, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v3", 3); }
+
+// Format 4's files, as its last encoder (aa9522b) wrote them.
+TEST(GoldenFormat4, Torus) { expectDecodesToGolden("torus", "/v4", 4); }
+TEST(GoldenFormat4, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v4", 4); }
+TEST(GoldenFormat4, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v4", 4); }
+TEST(GoldenFormat4, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v4", 4); }
+TEST(GoldenFormat4, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v4", 4); }
+
+// Header flag bit 8 (front neighbours) exists from format 5 on: a format 4
+// file that sets it, behind a fresh checksum, is refused, not decoded
+// with a lever its version never had.
+TEST(GoldenFormat4, FrontNeighbourFlagIsRefused) {
+    const std::vector<uint8_t> file = drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + "/v4/blobby-3cc.drm");
+    std::vector<drm_test::SectionSpan> sections;
+    ASSERT_TRUE(drm_test::parseSections(file, &sections));
+    std::vector<uint8_t> header = drm_test::payloadsOf(file, sections)[0];
+    EXPECT_EQ(header[1] & 1, 0);
+    header[1] |= 1;  // flags, u16 little-endian: bit 8 is the high byte's bit 0
+    const std::vector<uint8_t> flagged = drm_test::withPayload(file, 0, header);
+    try {
+        drm::decode(flagged);
+        ADD_FAILURE() << "a format 4 file with flag bit 8 decoded";
+    } catch (const drm::Error& e) {
+        EXPECT_EQ(e.kind(), drm::ErrorKind::Corrupt) << e.what();
+        EXPECT_NE(std::string(e.what()).find("unknown header flags"), std::string::npos) << e.what();
+    }
+    // The same file as written, and format 5's with the flag, decode.
+    EXPECT_NO_THROW(drm::decode(file));
+    const std::vector<uint8_t> v5 = drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + "/blobby-3cc.drm");
+    ASSERT_TRUE(drm_test::parseSections(v5, &sections));
+    EXPECT_EQ(drm_test::payloadsOf(v5, sections)[0][1] & 1, 1);
+}
 
 }  // namespace
