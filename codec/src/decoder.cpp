@@ -84,9 +84,12 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
     const FileHeader& header = d.header;
     Decoded& result = d.result;
     const size_t faceCount = d.traversalFaces;
-    // The face count is only a claim until the ranks deliver the faces: the
-    // tables start small and grow as faces are decoded.
-    const size_t expectedFaces = std::min<size_t>(faceCount, size_t(1) << 16);
+    // The face count is only a claim until the ranks deliver the faces; the
+    // vertices are already decoded, and a manifold mesh has about two faces
+    // a vertex: room for that many is made at once (growing by doubling
+    // copied the faces again and again, 2.5 % of decoding igea subdivided),
+    // never more, whatever the header claims.
+    const size_t expectedFaces = std::min<size_t>(faceCount, 2 * d.traversalVertices + 16);
     const std::unique_ptr<SpatialIndex> candidates =
         makeSpatialIndex(result.quantized, options.index, IndexRole::Traversal);
     Traversal traversal(d.traversalVertices, expectedFaces, candidates.get());
