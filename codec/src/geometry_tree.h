@@ -50,10 +50,11 @@ struct GeometryTreeTrials {
 };
 
 // Codes the grid with each tree, choice coding and frame asked for and
-// returns the smallest section (the first of equal ones, in the order
-// cheapest-first then spanning tree, within flags then one symbol, within
-// frame on then off). `trials`, when given, holds what earlier calls on
-// the same grid worked out, and gets what this one works out.
+// returns the smallest section (the first of equal ones, in the order:
+// flags, then one symbol; within each, the frame on, then off; within
+// each, the cheapest-first tree, then the spanning tree). `trials`, when
+// given, holds what earlier calls on the same grid worked out, and gets
+// what this one works out.
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     NeighbourIndex index = NeighbourIndex::Auto,
                                     GeometryTree tree = GeometryTree::Smaller,
