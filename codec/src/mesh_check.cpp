@@ -17,6 +17,7 @@ std::string faceText(const std::vector<uint32_t>& t, size_t f) {
 }  // namespace
 
 uint32_t MeshTopology::faceOf(uint32_t a, uint32_t b) const {
+    if (start[a] == start[a + 1]) return kNoIndex;
     const Outgoing* first = out.data() + start[a];
     const Outgoing* last = out.data() + start[a + 1];
     // A few edges leave most vertices; a hub's are searched by halving.
@@ -90,6 +91,7 @@ std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, 
     size_t firstClash = SIZE_MAX, clashWith = 0;
     uint32_t clashFrom = 0, clashTo = 0;
     for (size_t v = 0; v < vertexCount; ++v) {
+        if (start[v + 1] - start[v] < 2) continue;  // (no faces at all: no array to point into)
         MeshTopology::Outgoing* first = edges.data() + start[v];
         MeshTopology::Outgoing* last = edges.data() + start[v + 1];
         std::sort(first, last, [](const MeshTopology::Outgoing& x, const MeshTopology::Outgoing& y) {

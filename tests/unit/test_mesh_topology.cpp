@@ -56,6 +56,15 @@ TEST(MeshTopology, AHubSearchedByHalving) {
     expectAgreesWithSearch(t, rim + 1);
 }
 
+// Vertices without faces (the round-trip fuzzer's find: the empty edge
+// array has no storage to point into, which UBSan caught).
+TEST(MeshTopology, NoFacesAtAll) {
+    MeshTopology topology;
+    EXPECT_EQ(topologyProblem(std::vector<uint32_t>(), 3, &topology), "");
+    EXPECT_EQ(topology.faceOf(0, 1), kNoIndex);
+    EXPECT_EQ(topology.apexAcross(1, 2, nullptr), kNoVertex);
+}
+
 TEST(MeshTopology, ADirectedEdgeInTwoFacesIsNamedAsMetFaceByFace) {
     // 3->4 is repeated by face 2, 0->1 only by face 3: face 2's clash comes
     // first, though vertex 0's edges are looked at before vertex 3's.
