@@ -203,6 +203,18 @@ TEST(LoadMesh, PlainBinaryPlyReadsAsVcglibReadsItsAsciiCopy) {
     const drm::vcgio::LoadedMesh split = loadMesh(dir.file("quad.ply"));
     EXPECT_EQ(split.mesh.faceCount(), 2u);
     EXPECT_TRUE(hasNoteContaining(split, "polygons were split"));
+
+    // Bad input in the plain layout is refused before anything is copied:
+    // a corner past the vertices, and a file cut short.
+    std::string triangle = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                           "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    triangle.append(reinterpret_cast<const char*>(corners), sizeof corners);
+    triangle.push_back(char(3));
+    for (int32_t v : {0, 1, 4}) triangle.append(reinterpret_cast<const char*>(&v), 4);
+    writeText(dir.file("bad-index.ply"), triangle);
+    EXPECT_NE(errorOf(dir.file("bad-index.ply")).find("refers to vertex 4"), std::string::npos);
+    writeText(dir.file("short.ply"), triangle.substr(0, triangle.size() - 6));
+    EXPECT_NE(errorOf(dir.file("short.ply")).find("the file ends"), std::string::npos);
 }
 
 TEST(SavePly, RoundTripsBitExactlyThroughLoadMesh) {
