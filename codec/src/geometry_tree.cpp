@@ -130,6 +130,10 @@ int lastFlagged(const Predictions& p) {
 // edge) with models of its own, apart from the residuals from the other
 // candidates, which are small corrections; format 1 has one set.
 constexpr int kResidualGroups = 2;
+// Format 6's signs of coded residuals, as sign contexts see them.
+enum SignOf : uint8_t { kNoSign = 0, kPositive = 1, kNegative = 2 };
+inline uint8_t signOf(int32_t r) { return r > 0 ? kPositive : r < 0 ? kNegative : kNoSign; }
+
 inline int residualGroup(bool version2, uint32_t choice) { return version2 && choice != 0 ? 1 : 0; }
 
 // Format 2 codes a child count in a context of the parent's own child
@@ -141,11 +145,13 @@ constexpr int kChildCountContexts = 4;
 struct CodingState {
     bool version2;                     // format 2's residual models and child-count contexts (else format 1's)
     bool spacingContexts;              // format 3: the residual from the parent in contexts of the spacing
+    bool signContexts;                 // format 6: signs in contexts of the parent's and the previous axis'
     bool framedParent;                 // format 3 with the section's bit G: ... and in its local frame
     bool choiceFlags;                  // the choice as flags (format 2, F = 1), else one symbol
     std::vector<GridPoint> pos;        // decoded positions
     std::vector<uint32_t> parentOf;    // decoded parent, kNoVertex for roots
     std::vector<uint32_t> magnitude;   // |residual| per axis, 3 per vertex
+    std::vector<uint8_t> signOf;       // format 6: the residual's sign per axis, 3 per vertex (SignOf)
     std::vector<uint8_t> childCountOf; // decoded child-count symbols (8: escaped)
     DecodedCells cells;
     AxisModels axis[kResidualGroups][3];  // [residual group][axis]
@@ -184,6 +190,7 @@ struct CodingState {
     CodingState(int cellBits, int formatVersion, bool flagChoices, bool frameAllowed)
         : version2(formatVersion >= 2),
           spacingContexts(formatVersion >= 3),
+          signContexts(formatVersion >= 6),
           framedParent(formatVersion >= 3 && frameAllowed),
           choiceFlags(formatVersion >= 2 && flagChoices),
           cells(cellBits),
@@ -206,6 +213,7 @@ struct CodingState {
     void begin(uint32_t parent) {
         parentOf.push_back(parent);
         magnitude.insert(magnitude.end(), 3, 0);
+        if (signContexts) signOf.insert(signOf.end(), 3, kNoSign);
     }
     void place(uint32_t self, GridPoint at) {
         pos.push_back(at);
@@ -219,6 +227,20 @@ struct CodingState {
         return childCount[ofParent >= 3 ? 2 : ofParent == 2 ? 1 : 0];
     }
 };
+
+// Format 6: a sign context per axis. Residuals along the tree are not
+// independent: where a candidate overshoots the surface (curvature, a
+// scanner's rows, a grid's regular steps) it tends to overshoot the same way
+// for the parent and the child, and one error leaks into several axes. The
+// parent's sign on the axis and this vertex's on the axis before name one of
+// nine models (corpus whole file -0.7 % in geometric mean; teapot -4 %,
+// igea -2 %, bunny -1 %).
+int signContext(const CodingState& s, uint32_t self, uint32_t parent, int axis) {
+    if (!s.signContexts) return 0;
+    const int ofParent = s.signOf[3 * size_t(parent) + size_t(axis)];
+    const int before = axis > 0 ? int(s.signOf[3 * size_t(self) + size_t(axis - 1)]) : int(kNoSign);
+    return 3 * ofParent + before;
+}
 
 // The expected size of this vertex's residual on an axis, from residuals
 // already coded nearby: the parent's and the previous vertex's.
@@ -466,7 +488,9 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     const int32_t in[3] = {r.x, r.y, r.z};
     const int group = residualGroup(s.version2, choice);
     for (int a = 0; a < 3; ++a) {
-        const int32_t coded = codeResidual(io, s.axis[group][a], contexts[group][a], in[a]);
+        const int32_t coded =
+            codeResidual(io, s.axis[group][a], contexts[group][a], signContext(s, self, parent, a), in[a]);
+        if (s.signContexts) s.signOf[3 * size_t(self) + size_t(a)] = signOf(coded);
         ++s.residualsCoded[group][a][contexts[group][a]];
         s.magnitude[3 * size_t(self) + size_t(a)] = magnitudeOf(coded);
         out[a] = coded;
@@ -551,6 +575,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
+    if (s.signContexts) s.signOf.reserve(3 * n);
     s.childCountOf.reserve(n);
     Rehearsal io;
     struct Frame {
@@ -622,6 +647,7 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
+    if (s.signContexts) s.signOf.reserve(3 * n);
     s.childCountOf.reserve(n);
     TreeWalk walk;
     for (uint32_t self = 0; self < n; ++self) {
@@ -741,6 +767,7 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     s.pos.reserve(initial);
     s.parentOf.reserve(initial);
     s.magnitude.reserve(3 * initial);
+    if (s.signContexts) s.signOf.reserve(3 * initial);
     s.childCountOf.reserve(initial);
     TreeWalk walk;
     uint64_t promised = 0;  // children announced but not yet decoded

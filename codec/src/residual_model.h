@@ -17,12 +17,16 @@ inline uint32_t magnitudeOf(int32_t v) { return uint32_t(v < 0 ? -int64_t(v) : v
 constexpr int kMagnitudeContexts = 8;
 constexpr int kMaxLength = 23;      // bit lengths of residuals of 21-bit coordinates
 constexpr int kAdaptiveLowBits = 2; // bits below the leading one with a model
+// Format 6: a residual's sign in a context of two signs already known (each
+// none, + or -): the parent's on the same axis and this vertex's on the
+// axis before. Format 5 and earlier: one sign model (context 0).
+constexpr int kSignContexts = 9;
 
 // The models of one axis' residuals.
 struct AxisModels {
     BitModel zero[kMagnitudeContexts];
     BitModel longer[kMagnitudeContexts][kMaxLength];  // unary bit length: "longer than k"
-    BitModel sign;
+    BitModel sign[kSignContexts];
     BitModel low[kMaxLength + 1][kAdaptiveLowBits];  // by bit length, 1..kMaxLength
 
     // Every model agile (BitModel::agile): format 2's vertex coder.
@@ -30,22 +34,23 @@ struct AxisModels {
         for (BitModel& m : zero) m = BitModel::agile();
         for (auto& byContext : longer)
             for (BitModel& m : byContext) m = BitModel::agile();
-        sign = BitModel::agile();
+        for (BitModel& m : sign) m = BitModel::agile();
         for (auto& byLength : low)
             for (BitModel& m : byLength) m = BitModel::agile();
     }
 };
 
-// A residual: zero or not, the bit length n >= 1 in unary, the sign, then
-// the bits below the leading one (the first two adaptive, per n).
+// A residual: zero or not, the bit length n >= 1 in unary, the sign (in
+// signContext), then the bits below the leading one (the first two
+// adaptive, per n).
 template <class Io>
-int32_t codeResidual(Io& io, AxisModels& m, int context, int32_t r) {
+int32_t codeResidual(Io& io, AxisModels& m, int context, int signContext, int32_t r) {
     const uint32_t magnitude = magnitudeOf(r);
     if (io.bit(m.zero[context], magnitude == 0)) return 0;
     const int n = bitLength(magnitude);
     int length = 1;
     while (length < kMaxLength && io.bit(m.longer[context][length], n > length)) ++length;
-    const bool negative = io.bit(m.sign, r < 0) != 0;
+    const bool negative = io.bit(m.sign[signContext], r < 0) != 0;
     uint32_t value = 1;
     for (int k = 0; k < std::min(length - 1, kAdaptiveLowBits); ++k)
         value = (value << 1) | uint32_t(io.bit(m.low[length][k], (magnitude >> (length - 2 - k)) & 1));

@@ -5,7 +5,8 @@
 // folder of their own (v1/: written before the vertex coder's format 2;
 // v2/: before format 3's local frame; v3/: before format 4's nearest
 // candidates from the predictor's ball; v4/: before format 5's front
-// neighbours), so the decoder keeps reading what users already have.
+// neighbours; v5/: before format 6's sign contexts), so the decoder keeps
+// reading what users already have.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -66,6 +67,15 @@ TEST(GoldenFormat4, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden(
 TEST(GoldenFormat4, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v4", 4); }
 TEST(GoldenFormat4, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v4", 4); }
 
+// Format 5's files, as its last encoder (adec404) wrote them: one sign model
+// per axis, where format 6 has nine.
+TEST(GoldenFormat5, Torus) { expectDecodesToGolden("torus", "/v5", 5); }
+TEST(GoldenFormat5, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v5", 5); }
+TEST(GoldenFormat5, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v5", 5); }
+TEST(GoldenFormat5, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v5", 5); }
+TEST(GoldenFormat5, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v5", 5); }
+TEST(GoldenFormat5, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v5", 5); }
+
 // Header flag bit 8 (front neighbours) exists from format 5 on: a format 4
 // file that sets it, behind a fresh checksum, is refused, not decoded
 // with a lever its version never had.
@@ -84,11 +94,14 @@ TEST(GoldenFormat4, FrontNeighbourFlagIsRefused) {
         EXPECT_EQ(e.kind(), drm::ErrorKind::Corrupt) << e.what();
         EXPECT_NE(std::string(e.what()).find("unknown header flags"), std::string::npos) << e.what();
     }
-    // The same file as written, and format 5's with the flag, decode.
+    // The same file as written, and format 5's and today's with the flag, decode.
     EXPECT_NO_THROW(drm::decode(file));
-    const std::vector<uint8_t> v5 = drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + "/blobby-3cc.drm");
-    ASSERT_TRUE(drm_test::parseSections(v5, &sections));
-    EXPECT_EQ(drm_test::payloadsOf(v5, sections)[0][1] & 1, 1);
+    for (const char* folder : {"/v5", ""}) {
+        const std::vector<uint8_t> later =
+            drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + folder + "/blobby-3cc.drm");
+        ASSERT_TRUE(drm_test::parseSections(later, &sections));
+        EXPECT_EQ(drm_test::payloadsOf(later, sections)[0][1] & 1, 1) << folder;
+    }
 }
 
 }  // namespace

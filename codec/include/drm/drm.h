@@ -62,8 +62,9 @@ constexpr int kMaxTriedRefineBits = 5;
 // kAutoRefineAboveBitsPerVertex, refine is also tried with each of
 // kAutoRefineLowBits, and kept where the file is at least
 // kAutoRefineMinimumGainPercent smaller (refine decodes 20-30 % slower).
-// (11.5: genus3's tree costs 11.97 since format 3, and refine saves 10 % on it.)
-constexpr double kAutoRefineAboveBitsPerVertex = 11.5;
+// (11.0: genus3's tree costs 11.27 since format 6's sign contexts, and refine
+// saves 5 % on it; no other corpus mesh moves from 11.5.)
+constexpr double kAutoRefineAboveBitsPerVertex = 11.0;
 constexpr int kAutoRefineLowBits[] = {4, 2};
 constexpr int kAutoRefineMinimumGainPercent = 3;
 // EncodeOptions::normalBits and uvBits.
@@ -75,9 +76,9 @@ constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
-constexpr int kFileFormatVersion = 5;
+constexpr int kFileFormatVersion = 6;
 constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 5;
+constexpr int kNewestReadableFormatVersion = 6;
 
 // The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
 // MeshLab rank filter, README's legend): bucket 0 is a component's start
