@@ -131,7 +131,7 @@ int lastFlagged(const Predictions& p) {
 // candidates, which are small corrections; format 1 has one set.
 constexpr int kResidualGroups = 2;
 // Format 6's signs of coded residuals, as sign contexts see them.
-enum SignOf : uint8_t { kNoSign = 0, kPositive = 1, kNegative = 2 };
+enum Sign : uint8_t { kNoSign = 0, kPositive = 1, kNegative = 2 };
 inline uint8_t signOf(int32_t r) { return r > 0 ? kPositive : r < 0 ? kNegative : kNoSign; }
 
 inline int residualGroup(bool version2, uint32_t choice) { return version2 && choice != 0 ? 1 : 0; }
@@ -151,7 +151,7 @@ struct CodingState {
     std::vector<GridPoint> pos;        // decoded positions
     std::vector<uint32_t> parentOf;    // decoded parent, kNoVertex for roots
     std::vector<uint32_t> magnitude;   // |residual| per axis, 3 per vertex
-    std::vector<uint8_t> signOf;       // format 6: the residual's sign per axis, 3 per vertex (SignOf)
+    std::vector<uint8_t> signs;        // format 6: the residual's Sign per axis, 3 per vertex
     std::vector<uint8_t> childCountOf; // decoded child-count symbols (8: escaped)
     DecodedCells cells;
     AxisModels axis[kResidualGroups][3];  // [residual group][axis]
@@ -213,7 +213,7 @@ struct CodingState {
     void begin(uint32_t parent) {
         parentOf.push_back(parent);
         magnitude.insert(magnitude.end(), 3, 0);
-        if (signContexts) signOf.insert(signOf.end(), 3, kNoSign);
+        if (signContexts) signs.insert(signs.end(), 3, kNoSign);
     }
     void place(uint32_t self, GridPoint at) {
         pos.push_back(at);
@@ -237,8 +237,8 @@ struct CodingState {
 // igea -2 %, bunny -1 %).
 int signContext(const CodingState& s, uint32_t self, uint32_t parent, int axis) {
     if (!s.signContexts) return 0;
-    const int ofParent = s.signOf[3 * size_t(parent) + size_t(axis)];
-    const int before = axis > 0 ? int(s.signOf[3 * size_t(self) + size_t(axis - 1)]) : int(kNoSign);
+    const int ofParent = s.signs[3 * size_t(parent) + size_t(axis)];
+    const int before = axis > 0 ? int(s.signs[3 * size_t(self) + size_t(axis - 1)]) : int(kNoSign);
     return 3 * ofParent + before;
 }
 
@@ -490,7 +490,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     for (int a = 0; a < 3; ++a) {
         const int32_t coded =
             codeResidual(io, s.axis[group][a], contexts[group][a], signContext(s, self, parent, a), in[a]);
-        if (s.signContexts) s.signOf[3 * size_t(self) + size_t(a)] = signOf(coded);
+        if (s.signContexts) s.signs[3 * size_t(self) + size_t(a)] = signOf(coded);
         ++s.residualsCoded[group][a][contexts[group][a]];
         s.magnitude[3 * size_t(self) + size_t(a)] = magnitudeOf(coded);
         out[a] = coded;
@@ -575,7 +575,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
-    if (s.signContexts) s.signOf.reserve(3 * n);
+    if (s.signContexts) s.signs.reserve(3 * n);
     s.childCountOf.reserve(n);
     Rehearsal io;
     struct Frame {
@@ -647,7 +647,7 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
-    if (s.signContexts) s.signOf.reserve(3 * n);
+    if (s.signContexts) s.signs.reserve(3 * n);
     s.childCountOf.reserve(n);
     TreeWalk walk;
     for (uint32_t self = 0; self < n; ++self) {
@@ -767,7 +767,7 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     s.pos.reserve(initial);
     s.parentOf.reserve(initial);
     s.magnitude.reserve(3 * initial);
-    if (s.signContexts) s.signOf.reserve(3 * initial);
+    if (s.signContexts) s.signs.reserve(3 * initial);
     s.childCountOf.reserve(initial);
     TreeWalk walk;
     uint64_t promised = 0;  // children announced but not yet decoded
