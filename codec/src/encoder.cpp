@@ -2,6 +2,8 @@
 // the shared traversal with the true apex of every open edge and code its
 // distance rank.
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "encoder.h"
@@ -320,8 +322,11 @@ constexpr double kRefineMinimumGain = kAutoRefineMinimumGainPercent / 100.0;
 // and genus3 with 2 low bits, both tried either way) and spares a second
 // tree on the coarse grid wherever refine is not tried (venus, feline with
 // 2 low bits).
+// Past skipAbove the exact figure does not matter (the caller skips the
+// attempt): the refinement pass stops as soon as the estimate must exceed
+// it, and SIZE_MAX is returned.
 size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::vector<uint32_t>& triangles, int bits,
-                              int lowBits, NeighbourIndex index, GeometryTreeTrials& trials) {
+                              int lowBits, NeighbourIndex index, GeometryTreeTrials& trials, double skipAbove) {
     const GeometryEncoding tree =
         encodeGeometryTree(coarsenGrid(quantized, lowBits), bits - lowBits, index, GeometryTree::CheapestFirst,
                            ChoiceCoding::Flags, FrameUse::On, &trials);
@@ -333,7 +338,11 @@ size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::
     }
     std::vector<uint32_t> renumbered(triangles.size());
     for (size_t c = 0; c < triangles.size(); ++c) renumbered[c] = decodedIndex[triangles[c]];
-    return tree.bytes.size() + encodeRefinement(fine, lowBits, renumbered).bytes.size();
+    const double room = std::floor(skipAbove - double(tree.bytes.size()));
+    if (room < 0) return SIZE_MAX;
+    const Refinement refinement =
+        encodeRefinement(fine, lowBits, renumbered, room < double(SIZE_MAX / 2) ? size_t(room) : SIZE_MAX);
+    return refinement.overBudget ? SIZE_MAX : tree.bytes.size() + refinement.bytes.size();
 }
 
 Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
@@ -354,9 +363,11 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         // asked of it: the estimate spares the whole attempt elsewhere
         // (venus, casting, anchor).
         GeometryTreeTrials trials;
-        const size_t estimate =
-            refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, lowBits, options.index, trials);
-        if (double(treeGeometry) - double(estimate) < kRefineMinimumGain * double(treeTotal)) continue;
+        const double skipAbove = double(treeGeometry) - kRefineMinimumGain * double(treeTotal);
+        const size_t estimate = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, lowBits,
+                                                       options.index, trials, skipAbove);
+        if (estimate == SIZE_MAX || double(treeGeometry) - double(estimate) < kRefineMinimumGain * double(treeTotal))
+            continue;
         Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, lowBits, progress, &trials);
         if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
             best = std::move(refined);

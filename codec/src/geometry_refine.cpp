@@ -279,11 +279,15 @@ RefinePayload readRefinePayload(const uint8_t* data, size_t size, int bits) {
 
 namespace {
 
-std::vector<uint8_t> encodeWith(const std::vector<int32_t>& fine, const std::vector<int32_t>& coarse, int lowBits,
-                                const std::vector<uint32_t>& triangles, RefinePredictor predictor) {
+// Codes the low bits with one predictor; false, and nothing kept, as soon
+// as the stream is sure to take more than maxBytes.
+bool encodeWith(const std::vector<int32_t>& fine, const std::vector<int32_t>& coarse, int lowBits,
+                const std::vector<uint32_t>& triangles, RefinePredictor predictor, size_t maxBytes,
+                std::vector<uint8_t>& out) {
     Refiner refiner(coarse, lowBits, triangles, predictor);
     RangeEncoder coder;
     for (uint32_t v : refiner.order()) {
+        if (coder.bytesAtLeast() > maxBytes) return false;
         refiner.forecast(v);
         for (int k = 0; k < 3; ++k) {
             const uint32_t value = uint32_t(fine[3 * size_t(v) + k] - refiner.cellLow(v, k));
@@ -293,21 +297,33 @@ std::vector<uint8_t> encodeWith(const std::vector<int32_t>& fine, const std::vec
         }
         refiner.settle(v, &fine[3 * size_t(v)]);
     }
-    return coder.finish();
+    out = coder.finish();
+    return out.size() <= maxBytes;
 }
 
 }  // namespace
 
-Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const std::vector<uint32_t>& triangles) {
+// Every predictor, the smallest stream kept (the first of equal ones). A
+// predictor is dropped as soon as its stream must grow past the best so
+// far, which changes nothing in what is kept: a predictor that loses mostly
+// loses from early on, and refine's estimates and attempts code the low
+// bits of every vertex four times.
+Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const std::vector<uint32_t>& triangles,
+                            size_t maxBytes) {
     const std::vector<int32_t> coarse = coarsenGrid(fine, lowBits);
     Refinement best;
+    best.overBudget = true;
     for (int p = 0; p < kRefinePredictors; ++p) {
-        std::vector<uint8_t> bytes = encodeWith(fine, coarse, lowBits, triangles, RefinePredictor(p));
-        if (p == 0 || bytes.size() < best.bytes.size()) {
-            best.predictor = RefinePredictor(p);
-            best.bytes = std::move(bytes);
-        }
+        if (!best.overBudget && best.bytes.empty()) break;  // nothing is smaller than empty
+        // A later predictor must be strictly smaller to be kept.
+        const size_t budget = best.overBudget ? maxBytes : best.bytes.size() - 1;
+        std::vector<uint8_t> bytes;
+        if (!encodeWith(fine, coarse, lowBits, triangles, RefinePredictor(p), budget, bytes)) continue;
+        best.predictor = RefinePredictor(p);
+        best.bytes = std::move(bytes);
+        best.overBudget = false;
     }
+    if (best.overBudget) best.predictor = RefinePredictor::Parallelogram;
     return best;
 }
 

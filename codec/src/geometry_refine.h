@@ -43,6 +43,7 @@ std::vector<int32_t> coarsenGrid(const std::vector<int32_t>& grid, int lowBits);
 struct Refinement {
     RefinePredictor predictor = RefinePredictor::Parallelogram;
     std::vector<uint8_t> bytes;
+    bool overBudget = false;  // every predictor passed encodeRefinement's maxBytes
 };
 
 struct RefinePayload {
@@ -64,7 +65,11 @@ RefinePayload readRefinePayload(const uint8_t* data, size_t size, int bits);
 // fine: the grid coordinates of the vertices (3 per vertex, decoded order).
 // triangles: the decoded triangles over those vertices, in the order the
 // decoder rebuilds them. Tries every predictor, returns the smallest.
-Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const std::vector<uint32_t>& triangles);
+// With maxBytes, a refinement that would take more bytes is not finished:
+// then `bytes` is empty and `overBudget` set (an encoder's estimate needs
+// no more than that answer).
+Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const std::vector<uint32_t>& triangles,
+                            size_t maxBytes = SIZE_MAX);
 // coarse: the coarse grid (3 per vertex); returns the full grid. Throws
 // Error if the payload ends before the last vertex.
 std::vector<int32_t> decodeRefinement(const RefinePayload& payload, const std::vector<int32_t>& coarse,

@@ -34,6 +34,11 @@ public:
     // The stream omits its last three bytes, which are always zero: the
     // decoder supplies them itself.
     std::vector<uint8_t> finish();
+    // A floor under the size finish() will hand over: the bytes written and
+    // those held back (the cache and its run of 0xFF bytes), which every
+    // later step keeps or adds to. An encoder comparing ways of coding can
+    // stop one once this passes the best so far.
+    size_t bytesAtLeast() const { return out_.size() + size_t(pendingFF_) + (cacheIsLeadingZero_ ? 0 : 1); }
 
 private:
     void shiftLow();

@@ -4,6 +4,7 @@
 // out-of-range fields with a clear message.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 #include <string>
 
@@ -40,6 +41,30 @@ TEST(GeometryRefine, HeightFieldAtEveryLowBitCount) {
     std::vector<uint32_t> triangles;
     heightField(20, grid, triangles);
     for (int lowBits = 1; lowBits <= kMaxRefineBits; ++lowBits) expectRoundTrip(grid, lowBits, triangles);
+}
+
+// A byte budget changes nothing within it and is reported when nothing
+// fits: the answer an encoder's estimate takes to skip an attempt.
+TEST(GeometryRefine, ABudgetKeepsTheSameStreamOrSaysItIsOver) {
+    std::vector<int32_t> grid;
+    std::vector<uint32_t> triangles;
+    heightField(20, grid, triangles);
+    for (int lowBits : {2, 4}) {
+        const Refinement free = encodeRefinement(grid, lowBits, triangles);
+        ASSERT_FALSE(free.overBudget);
+        ASSERT_GT(free.bytes.size(), 8u);
+        for (size_t budget : {free.bytes.size(), free.bytes.size() + 1, size_t(SIZE_MAX)}) {
+            const Refinement within = encodeRefinement(grid, lowBits, triangles, budget);
+            EXPECT_FALSE(within.overBudget) << budget;
+            EXPECT_EQ(within.bytes, free.bytes) << budget;
+            EXPECT_EQ(within.predictor, free.predictor) << budget;
+        }
+        for (size_t budget : {size_t(0), free.bytes.size() / 2, free.bytes.size() - 1}) {
+            const Refinement over = encodeRefinement(grid, lowBits, triangles, budget);
+            EXPECT_TRUE(over.overBudget) << budget;
+            EXPECT_TRUE(over.bytes.empty()) << budget;
+        }
+    }
 }
 
 TEST(GeometryRefine, EveryPredictorRoundTrips) {

@@ -91,6 +91,31 @@ TEST(RangeCoder, LongRunsOfFFAndCarriesRoundTrip) {
     }
 }
 
+// bytesAtLeast never shrinks while symbols are coded and never exceeds
+// what finish() hands over, also through runs of 0xFF held back for a
+// carry (the encoder stops a losing way of coding on it).
+TEST(RangeCoder, BytesAtLeastIsAFloorThatOnlyGrows) {
+    std::mt19937 rng(3);
+    const uint32_t total = drm::kRangeCoderMaxTotal;
+    for (int trial = 0; trial < 40; ++trial) {
+        std::vector<Symbol> symbols = trial % 2 ? randomSymbols(rng, 2000) : std::vector<Symbol>();
+        for (int i = 0; trial % 2 == 0 && i < 2000; ++i)  // runs of 0xFF and carries, as above
+            symbols.push_back(rng() % 8 ? Symbol{total - 1, 1, total} : Symbol{total - 2 - uint32_t(rng() % 8), 1, total});
+        drm::RangeEncoder encoder;
+        size_t floor = encoder.bytesAtLeast(), grew = 0;
+        for (const Symbol& s : symbols) {
+            encoder.encode(s.cum, s.freq, s.total);
+            ASSERT_GE(encoder.bytesAtLeast(), floor) << "trial " << trial;
+            grew += encoder.bytesAtLeast() > floor ? 1 : 0;
+            floor = encoder.bytesAtLeast();
+        }
+        const size_t size = encoder.finish().size();
+        EXPECT_LE(floor, size) << "trial " << trial;
+        EXPECT_GE(floor + 2, size) << "trial " << trial;  // and close to it
+        EXPECT_GT(grew, 0u);
+    }
+}
+
 TEST(RangeCoder, CertainSymbolsCostNothing) {
     drm::RangeEncoder encoder;
     for (int i = 0; i < 100000; ++i) encoder.encode(0, 7, 7);
