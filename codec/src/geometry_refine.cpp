@@ -305,9 +305,9 @@ bool encodeWith(const std::vector<int32_t>& fine, const std::vector<int32_t>& co
 
 // Every predictor, the smallest stream kept (the first of equal ones). A
 // predictor is dropped as soon as its stream must grow past the best so
-// far, which changes nothing in what is kept: a predictor that loses mostly
-// loses from early on, and refine's estimates and attempts code the low
-// bits of every vertex four times.
+// far, which changes nothing in what is kept. Refine's estimates and
+// attempts code the low bits of every vertex four times; losing predictors
+// mostly fall behind late, so this spares only a few percent of that.
 Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const std::vector<uint32_t>& triangles,
                             size_t maxBytes) {
     const std::vector<int32_t> coarse = coarsenGrid(fine, lowBits);
