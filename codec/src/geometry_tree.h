@@ -46,7 +46,7 @@ struct GeometryTreeTrials {
     size_t vertexCount = 0;  // of the grid they are for (checked)
     int bits = 0;
     std::shared_ptr<const NearestNeighbours> nearest;
-    std::map<int, GeometryEncoding> coded;  // by trialKey (geometry_tree.cpp)
+    std::map<int, GeometryEncoding> coded;  // by tree, choice coding and frame (a key encodeGeometryTree forms)
 };
 
 // Codes the grid with each tree, choice coding and frame asked for and
@@ -62,8 +62,9 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     FrameUse frames = FrameUse::Smaller,
                                     GeometryTreeTrials* trials = nullptr);
 
-// Reads a section in the syntax of format version 1, 2 or 3 (docs/format.md;
-// the encoder writes kFileFormatVersion's). Throws Error on data that does
+// Reads a section in the syntax of format version formatVersion (1 to
+// kFileFormatVersion; the section changed in versions 2, 3 and 6:
+// docs/format.md; the encoder writes kFileFormatVersion's). Throws Error on data that does
 // not decode to exactly vertexCount vertices on the grid.
 std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits,
                                         int formatVersion);
