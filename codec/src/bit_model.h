@@ -31,7 +31,9 @@ public:
         m.seen_ = 0;
         return m;
     }
-    void encode(RangeEncoder& coder, int bit) {
+    // Coder: a RangeEncoder or a CodingLog.
+    template <class Coder>
+    void encode(Coder& coder, int bit) {
         const uint32_t p1 = probabilityOfOne();
         if (bit) coder.encode(kOne - p1, p1, kOne);
         else coder.encode(0, kOne - p1, kOne);
@@ -97,14 +99,18 @@ private:
 // the writer codes the value it is given and returns it, the reader ignores
 // it and returns what it decodes. So both sides take every decision in the
 // same code.
-struct Writer {
-    RangeEncoder& coder;
+// A CodingLog in place of the RangeEncoder keeps the calls to make later.
+template <class Coder>
+struct BasicWriter {
+    Coder& coder;
     static constexpr bool kEncoding = true;
     int bit(BitModel& m, int b) { m.encode(coder, b); return b; }
     uint32_t plain(uint32_t v, int count) { coder.encodeWideBits(v, count); return v & uint32_t((uint64_t(1) << count) - 1); }
     uint64_t wide(uint64_t v, int count) { coder.encodeWideBits(v, count); return count >= 64 ? v : v & ((uint64_t(1) << count) - 1); }
     uint32_t symbol(AdaptiveFrequencies& m, uint32_t s) { m.encode(coder, s); return s; }
 };
+using Writer = BasicWriter<RangeEncoder>;
+using LogWriter = BasicWriter<CodingLog>;
 // An encoder's rehearsal: the models learn exactly as through a Writer,
 // nothing is written (to try an order of coding before committing to it).
 struct Rehearsal {

@@ -514,8 +514,8 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, Grid
 }
 
 template <class Io>
-uint32_t codeChildCount(Io& io, CodingState& s, uint32_t count) {
-    const uint32_t symbol = io.symbol(s.childCountModel(uint32_t(s.pos.size() - 1)), std::min(count, kDirectChildCounts));
+uint32_t codeChildCount(Io& io, CodingState& s, uint32_t self, uint32_t count) {
+    const uint32_t symbol = io.symbol(s.childCountModel(self), std::min(count, kDirectChildCounts));
     s.childCountOf.push_back(uint8_t(symbol));
     if (symbol < kDirectChildCounts) return symbol;
     // Elias gamma of w >= 1: n - 1 zero bits, a one bit, then the n - 1 bits
@@ -553,18 +553,19 @@ constexpr size_t kMaxNeighboursLooked = 32;
 // child of the vertex on top of the stack is its undecoded neighbour that
 // costs least to code next under the models as they stand (its best
 // prediction's residual plus naming that prediction); a vertex leaves the
-// stack when no neighbour is left undecoded. The coding is rehearsed as it
-// goes, so the models are those the real coding will have at each step
-// (child counts aside: they have models of their own and do not steer the
+// stack when no neighbour is left undecoded. The coding is done as it
+// goes, so the models are those the section's own at each step (child
+// counts aside: they have models of their own and do not steer the
 // choice). The decoder needs none of this: it reads the tree's shape from
 // the child counts. A minimum spanning tree orders by edge length; this
 // orders by how well a vertex can be predicted. Returns child lists of
-// input vertices, in coding order, and in `choices` the candidate each
-// vertex is coded from, by preorder index: the pick codeTree would make,
-// under the same models, so codeTree need not price the candidates again.
-std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>& grid, const NeighbourGraph& graph,
-                                                     int cellBits, bool flagChoices, bool frame,
-                                                     std::vector<uint32_t>& choices) {
+// input vertices, in coding order. The coding is kept in `log`, one unit a
+// vertex in preorder (a root's coordinates, any other's choice and
+// residuals): all of the section but the child counts, which are known
+// only once the tree is grown (writeGrownTree puts them in).
+std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>& grid, int bits,
+                                                     const NeighbourGraph& graph, int cellBits, bool flagChoices,
+                                                     bool frame, CodingLog& log, uint64_t& framedResiduals) {
     const size_t n = grid.size() / 3;
     std::vector<std::vector<uint32_t>> children(n);
     std::vector<uint8_t> done(n, 0);
@@ -577,18 +578,20 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
     s.magnitude.reserve(3 * n);
     if (s.signContexts) s.signs.reserve(3 * n);
     s.childCountOf.reserve(n);
-    Rehearsal io;
+    LogWriter io{log};
     struct Frame {
         uint32_t vertex, decoded;
     };
     std::vector<Frame> stack;
-    choices.assign(n, kNotChosen);
     uint32_t self = 0;
     for (uint32_t root = 0; root < n; ++root) {
         if (done[root]) continue;
         done[root] = 1;
         s.begin(kNoVertex);
-        s.place(self, gridPointOf(grid, root));
+        const GridPoint rootAt = gridPointOf(grid, root);
+        for (int32_t c : {rootAt.x, rootAt.y, rootAt.z}) log.encodeWideBits(uint32_t(c), bits);
+        log.endUnit();
+        s.place(self, rootAt);
         stack.push_back({root, self++});
         while (!stack.empty()) {
             const Frame top = stack.back();
@@ -620,29 +623,54 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
             s.begin(top.decoded);
             const GridPoint at = gridPointOf(grid, next);
             codeChild(io, s, self, top.decoded, p, at, nextPick.candidate);
-            choices[self] = nextPick.candidate;
+            log.endUnit();
             s.place(self, at);
             stack.push_back({next, self++});
         }
     }
+    framedResiduals = s.framedResiduals;
     return children;
 }
 
-// The tree's section: the cell size, how the predictor choice is coded,
-// then each vertex in preorder (a root raw, any other as a predicted
-// residual) with its child count. `choices`, when given, holds the
-// candidate each vertex is coded from (by preorder index), else each is
-// picked here.
-std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int cellBits,
-                              const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order,
-                              const std::vector<uint32_t>* choices, bool flagChoices, bool frame,
-                              uint64_t& framedResiduals) {
-    const size_t n = order.size();
-    RangeEncoder coder;
-    Writer io{coder};
+// The tree's section begins with the cell size and how the predictor
+// choice is coded.
+void writeTreeHeader(RangeEncoder& coder, int cellBits, bool flagChoices, bool frame) {
     coder.encodeBits(uint32_t(cellBits), kCellBitsWidth);
     coder.encodeBits(flagChoices ? 1 : 0, 1);
     coder.encodeBits(frame ? 1 : 0, 1);  // G, from format 3
+}
+
+// The section of a tree cheapestFirstTree grew: each vertex's unit of its
+// log, then the vertex's child count.
+std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const std::vector<std::vector<uint32_t>>& children,
+                                    const std::vector<uint32_t>& order, bool flagChoices, bool frame) {
+    RangeEncoder coder;
+    Writer io{coder};
+    writeTreeHeader(coder, cellBits, flagChoices, frame);
+    CodingState s(cellBits, kFileFormatVersion, flagChoices, frame);  // for the child counts' models
+    s.parentOf.reserve(order.size());
+    s.childCountOf.reserve(order.size());
+    TreeWalk walk;
+    size_t at = 0;
+    for (uint32_t self = 0; self < order.size(); ++self) {
+        s.parentOf.push_back(walk.enter());
+        at = log.replayInto(coder, at);
+        const uint32_t count = uint32_t(children[order[self]].size());
+        codeChildCount(io, s, self, count);
+        walk.expect(self, count);
+    }
+    return coder.finish();
+}
+
+// The section of any tree: each vertex in preorder (a root raw, any other
+// as a predicted residual) with its child count.
+std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int cellBits,
+                              const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order,
+                              bool flagChoices, bool frame, uint64_t& framedResiduals) {
+    const size_t n = order.size();
+    RangeEncoder coder;
+    Writer io{coder};
+    writeTreeHeader(coder, cellBits, flagChoices, frame);
     CodingState s(cellBits, kFileFormatVersion, flagChoices, frame);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
@@ -658,10 +686,10 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
         if (parent == kNoVertex) {
             for (int32_t c : {at.x, at.y, at.z}) coder.encodeWideBits(uint32_t(c), bits);
         } else {
-            codeChild(io, s, self, parent, predict(s, self, parent), at, choices ? (*choices)[self] : kNotChosen);
+            codeChild(io, s, self, parent, predict(s, self, parent), at);
         }
         s.place(self, at);
-        codeChildCount(io, s, uint32_t(children[vertex].size()));
+        codeChildCount(io, s, self, uint32_t(children[vertex].size()));
         walk.expect(self, uint32_t(children[vertex].size()));
     }
     framedResiduals = s.framedResiduals;
@@ -695,35 +723,33 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     const int cellBits = cellBitsFor(nearest.spacing, bits);
     GeometryEncoding* best = nullptr;
     NeighbourGraph graph;
-    std::vector<std::vector<uint32_t>> grown, spanning;
+    std::vector<std::vector<uint32_t>> spanning;  // kept for the next trial
     // Codes one way, unless an earlier call did.
-    auto trial = [&](bool cheapestFirst, bool flagChoices, bool frame, auto growTree) {
+    auto trial = [&](bool cheapestFirst, bool flagChoices, bool frame, auto codeOneWay) {
         const int key = (cheapestFirst ? 4 : 0) + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
         auto found = trials->coded.find(key);
-        if (found == trials->coded.end()) {
-            std::vector<uint32_t> choices;
-            const std::vector<std::vector<uint32_t>>& children = growTree(flagChoices, frame, choices);
-            GeometryEncoding coded;
-            coded.order = preorder(children);
-            coded.bytes = codeTree(grid, bits, cellBits, children, coded.order, cheapestFirst ? &choices : nullptr,
-                                   flagChoices, frame, coded.framedResiduals);
-            found = trials->coded.emplace(key, std::move(coded)).first;
-            std::vector<std::vector<uint32_t>>().swap(grown);  // the spanning forest is kept for the next trial
-        }
+        if (found == trials->coded.end()) found = trials->coded.emplace(key, codeOneWay(flagChoices, frame)).first;
         if (!best || found->second.bytes.size() < best->bytes.size()) best = &found->second;
     };
-    auto cheapestFirst = [&](bool flagChoices, bool frame,
-                             std::vector<uint32_t>& choices) -> const std::vector<std::vector<uint32_t>>& {
+    auto cheapestFirst = [&](bool flagChoices, bool frame) {
         if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
-        grown = cheapestFirstTree(grid, graph, cellBits, flagChoices, frame, choices);
-        return grown;
+        CodingLog log;
+        GeometryEncoding coded;
+        const std::vector<std::vector<uint32_t>> grown =
+            cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals);
+        coded.order = preorder(grown);
+        coded.bytes = writeGrownTree(log, cellBits, grown, coded.order, flagChoices, frame);
+        return coded;
     };
-    auto spanningTree = [&](bool, bool, std::vector<uint32_t>&) -> const std::vector<std::vector<uint32_t>>& {
+    auto spanningTree = [&](bool flagChoices, bool frame) {
         if (spanning.empty()) {
             spanning = spanningForest(grid, nearest);
             orderChildrenForPrediction(grid, spanning);
         }
-        return spanning;
+        GeometryEncoding coded;
+        coded.order = preorder(spanning);
+        coded.bytes = codeTree(grid, bits, cellBits, spanning, coded.order, flagChoices, frame, coded.framedResiduals);
+        return coded;
     };
     for (ChoiceCoding coding : {ChoiceCoding::Flags, ChoiceCoding::Symbol}) {
         if (choices != ChoiceCoding::Smaller && choices != coding) continue;
@@ -788,7 +814,7 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
                 throw Error(ErrorKind::Corrupt, "corrupt file: geometry vertex " + std::to_string(self) + " falls outside the grid");
         }
         s.place(self, at);
-        const uint32_t childCount = codeChildCount(io, s, 0);
+        const uint32_t childCount = codeChildCount(io, s, self, 0);
         promised += childCount;
         if (promised > n - 1 - self)
             throw Error(ErrorKind::Corrupt, "corrupt file: geometry vertex " + std::to_string(self) + " announces more children than remain");

@@ -134,4 +134,45 @@ uint64_t RangeDecoder::decodeWideBits(int count) {
     return value;
 }
 
+void CodingLog::encode(uint32_t cumFreq, uint32_t freq, uint32_t totalFreq) {
+    assert(freq > 0 && totalFreq <= kRangeCoderMaxTotal && cumFreq + freq <= totalFreq);
+    if (totalFreq == 4096 && freq < 4096 && (cumFreq == 0 || cumFreq + freq == totalFreq)) {
+        words_.push_back(uint16_t(kBinary | (cumFreq == 0 ? 0 : 0x1000) | freq));
+        return;
+    }
+    words_.push_back(uint16_t(kSymbol | (cumFreq >> 16) | (freq >> 16) << 1 | (totalFreq >> 16) << 2));
+    for (uint32_t v : {cumFreq, freq, totalFreq}) words_.push_back(uint16_t(v));
+}
+
+void CodingLog::encodeWideBits(uint64_t value, int count) {
+    assert(count >= 0 && count <= 64);
+    if (count <= 0) return;
+    words_.push_back(uint16_t(kPlain | count));
+    for (int shift = (count - 1) / 16 * 16; shift >= 0; shift -= 16) words_.push_back(uint16_t(value >> shift));
+}
+
+size_t CodingLog::replayInto(RangeEncoder& coder, size_t at) const {
+    while (at < words_.size()) {
+        const uint16_t word = words_[at++];
+        if (word & kBinary) {
+            const uint32_t freq = word & 0x0FFFu;
+            coder.encode(word & 0x1000 ? 4096 - freq : 0, freq, 4096);
+        } else if (word & kPlain) {
+            const int count = word & 0x7F;
+            uint64_t value = 0;
+            for (int chunks = (count + 15) / 16; chunks > 0; --chunks) value = value << 16 | words_[at++];
+            coder.encodeWideBits(value, count);
+        } else if (word & kSymbol) {
+            const uint32_t cum = uint32_t(word & 1) << 16 | words_[at];
+            const uint32_t freq = uint32_t(word >> 1 & 1) << 16 | words_[at + 1];
+            const uint32_t total = uint32_t(word >> 2 & 1) << 16 | words_[at + 2];
+            at += 3;
+            coder.encode(cum, freq, total);
+        } else {
+            break;  // kEndOfUnit
+        }
+    }
+    return at;
+}
+
 }  // namespace drm

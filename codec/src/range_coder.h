@@ -52,6 +52,35 @@ private:
     std::vector<uint8_t> out_;
 };
 
+// The calls an encoder would make on a RangeEncoder, kept in order to be
+// made later (replayInto): an encoder that must decide what its stream
+// holds (the geometry tree's shape) before some of it can be written codes
+// the rest into a log as it goes, instead of modelling it a second time.
+// Two bytes a binary decision of a 12-bit model (the common call), eight
+// for any other symbol; replaying makes exactly the same calls, so the
+// bytes are those of coding directly.
+class CodingLog {
+public:
+    void encode(uint32_t cumFreq, uint32_t freq, uint32_t totalFreq);
+    void encodeBits(uint32_t value, int count) { encodeWideBits(value, count); }  // count <= 16: the same calls
+    void encodeWideBits(uint64_t value, int count);
+    // Closes a unit: replayInto stops at the end of each.
+    void endUnit() { words_.push_back(kEndOfUnit); }
+    // Makes the calls logged from `at` up to the end of the unit there, and
+    // returns where the next unit begins.
+    size_t replayInto(RangeEncoder& coder, size_t at) const;
+    size_t size() const { return words_.size(); }
+
+private:
+    // Each call's first word says what it is by its top bits: 1 a binary
+    // decision over 4096 (cum 0 or 4096 - freq, and freq below 4096), 01
+    // plain bits (the count; the value follows in 16-bit words, most
+    // significant first), 001 any symbol (bits 16 of cum, freq and total;
+    // their low 16 bits follow), 0 the end of a unit.
+    static constexpr uint16_t kBinary = 0x8000, kPlain = 0x4000, kSymbol = 0x2000, kEndOfUnit = 0;
+    std::vector<uint16_t> words_;
+};
+
 class RangeDecoder {
 public:
     // Reading past the end of data yields zero bytes (counted, see

@@ -69,13 +69,6 @@ AdaptiveFrequencies::AdaptiveFrequencies(const std::vector<uint16_t>& initialCou
     for (uint32_t c : counts_) total_ += c;
 }
 
-void AdaptiveFrequencies::encode(RangeEncoder& coder, uint32_t symbol) {
-    uint32_t cum = 0;
-    for (uint32_t s = 0; s < symbol; ++s) cum += counts_[s];
-    coder.encode(cum, counts_[symbol], total_);
-    update(symbol);
-}
-
 uint32_t AdaptiveFrequencies::decode(RangeDecoder& coder) {
     const uint32_t target = coder.decodeFreq(total_);
     // Linear search: the common ranks are the first symbols, so this

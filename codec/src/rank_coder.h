@@ -27,7 +27,14 @@ class AdaptiveFrequencies {
 public:
     explicit AdaptiveFrequencies(const std::vector<uint16_t>& initialCounts);
 
-    void encode(RangeEncoder& coder, uint32_t symbol);
+    // Coder: a RangeEncoder or a CodingLog.
+    template <class Coder>
+    void encode(Coder& coder, uint32_t symbol) {
+        uint32_t cum = 0;
+        for (uint32_t s = 0; s < symbol; ++s) cum += counts_[s];
+        coder.encode(cum, counts_[symbol], total_);
+        update(symbol);
+    }
     uint32_t decode(RangeDecoder& coder);
     // Counts symbol without coding it (for tables that only teach others).
     void observe(uint32_t symbol) { update(symbol); }
