@@ -79,6 +79,45 @@ TEST(GeometryTree, CheapestFirstTreeBeatsTheSpanningTreeOnFandisk) {
     EXPECT_LT(double(cheapest), 0.85 * double(spanning)) << cheapest << " against " << spanning << " bytes";
 }
 
+// A spanning tree that runs far behind the cheapest-first one is given up
+// before its end on a large mesh (fandisk's points with the midpoints of
+// its edges, 25,900 vertices, where the cheapest-first tree is much
+// smaller), and the section kept is the one coding both trees to the end
+// would keep.
+TEST(GeometryTree, ASpanningTreeFarBehindIsGivenUp) {
+    const Mesh mesh = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/fandisk.ply");
+    const std::vector<int32_t> corners = gridOf("fandisk.ply", 12);
+    std::vector<int32_t> grid = corners;
+    std::vector<std::pair<uint32_t, uint32_t>> edges;
+    for (size_t t = 0; t < mesh.triangles.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = mesh.triangles[t + size_t(k)], b = mesh.triangles[t + size_t((k + 1) % 3)];
+            edges.push_back({std::min(a, b), std::max(a, b)});
+        }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (const auto& e : edges)
+        for (int k = 0; k < 3; ++k) grid.push_back((corners[3 * e.first + size_t(k)] + corners[3 * e.second + size_t(k)]) / 2);
+    ASSERT_GT(grid.size() / 3, 16384u);
+
+    GeometryTreeTrials trials;
+    const GeometryEncoding kept = encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::Smaller,
+                                                     ChoiceCoding::Flags, FrameUse::On, &trials);
+    ASSERT_EQ(trials.coded.size(), 2u);
+    size_t givenUp = 0;
+    for (const auto& coded : trials.coded) givenUp += coded.second.bytes.empty() ? 1 : 0;
+    EXPECT_EQ(givenUp, 1u);
+    const GeometryEncoding cheapest = encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::CheapestFirst,
+                                                         ChoiceCoding::Flags, FrameUse::On);
+    // Asked for alone, with the same trials, the spanning tree is coded to the end.
+    const GeometryEncoding spanning = encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::SpanningTree,
+                                                         ChoiceCoding::Flags, FrameUse::On, &trials);
+    EXPECT_FALSE(spanning.bytes.empty());
+    EXPECT_LT(cheapest.bytes.size(), spanning.bytes.size());
+    EXPECT_EQ(kept.bytes, cheapest.bytes);
+    expectRoundTrip(grid, 12);
+}
+
 // The section's syntax follows the file's format version: a section read
 // as an earlier version (version 1: one symbol for the predictor choice;
 // version 2: no local frame for the residual from the parent; versions 3 to
