@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "all_nearest.h"
 #include "vertex_index.h"
 
 namespace drm {
@@ -56,14 +57,25 @@ void GridIndex::nearest(const FixedPoint& p, size_t count, VertexFilter accept, 
         p, count, [&](uint32_t v) { return fixedDistance2(grid_, p, v); }, accept, out, scratch_);
 }
 
+// Every vertex at once by cells (all_nearest.h), then the vertices that
+// pass leaves uncertain one by one: the same answers (igea's 8-nearest
+// graph 806 M -> 565 M instructions, horse 293 M -> 185 M).
 void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours,
                               std::vector<int64_t>& distance2) const {
     const size_t n = grid_.size() / 3;
     neighbours.assign(n * count, kNoVertex);
     distance2.assign(n * count, 0);
+    std::vector<uint32_t> uncertain;
+    if (cells_.presentCount() == n) {
+        uncertain = nearestOfEachByCells(grid_, count, -1, neighbours, distance2);
+        for (int64_t& d2 : distance2) d2 *= kSubUnits * kSubUnits;  // to fixed point, as nearest() gives them
+    } else {
+        uncertain.resize(n);
+        for (size_t v = 0; v < n; ++v) uncertain[v] = uint32_t(v);
+    }
     std::vector<RankedVertex> found;
-    for (size_t v = 0; v < n; ++v) {
-        nearest(fixedPointOf(grid_, uint32_t(v)), count, [v](uint32_t w) { return w != v; }, found);
+    for (const uint32_t v : uncertain) {
+        nearest(fixedPointOf(grid_, v), count, [v](uint32_t w) { return w != v; }, found);
         for (size_t j = 0; j < found.size(); ++j) {
             neighbours[v * count + j] = found[j].second;
             distance2[v * count + j] = found[j].first;

@@ -8,11 +8,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <random>
 #include <set>
+#include <string>
 
+#include "all_nearest.h"
 #include "spatial_index.h"
+#include "tiny_ply.h"
 
 namespace drm {
 namespace {
@@ -106,6 +110,74 @@ TEST_P(BothIndexes, NearestOfEachIsEveryVertexsNearestOthers) {
             }
         }
     }
+}
+
+// The batch search by cells, on its own: every point it certifies has
+// exactly its k nearest others (ties by index), at every cell width, on a
+// sampled surface with coincident points (stacks of up to 12, so that a
+// point's own entry can fall out of the first k + 1) and far outliers;
+// the points it leaves uncertain keep their rows untouched. At the width it
+// picks itself, a scan's vertices leave few points uncertain (the speed it
+// is for).
+TEST(AllNearest, CertifiedPointsHaveExactlyTheirNearestAtEveryCellWidth) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> angle(0, 6.283185307179586);
+    std::vector<int32_t> grid;
+    for (int i = 0; i < 1500; ++i) {  // a sphere of radius 1000 around (2000, 2000, 2000)
+        const double a = angle(rng), b = angle(rng) / 2;
+        for (double c : {std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)})
+            grid.push_back(int32_t(std::lround(2000 + 1000 * c)));
+        if (i % 50 == 0)
+            for (int copy = 0; copy < 1 + i % 12; ++copy) grid.insert(grid.end(), grid.end() - 3, grid.end());
+    }
+    grid.insert(grid.end(), {0, 0, 0, 4095, 4095, 4095, 4095, 0, 17});
+    const size_t n = grid.size() / 3;
+    for (size_t k : {size_t(1), size_t(8)}) {
+        std::vector<std::vector<RankedVertex>> expected(n);
+        for (uint32_t v = 0; v < n; ++v) {
+            for (uint32_t w = 0; w < n; ++w)
+                if (w != v) expected[v].emplace_back(fixedDistance2(grid, fixedPointOf(grid, v), w) / (kSubUnits * kSubUnits), w);
+            std::sort(expected[v].begin(), expected[v].end());
+            expected[v].resize(k);
+        }
+        for (int shift : {-1, 0, 3, 5, 7, 9, 12, 21}) {
+            SCOPED_TRACE("k " + std::to_string(k) + " cell shift " + std::to_string(shift));
+            std::vector<uint32_t> neighbours(n * k, 12345);
+            std::vector<int64_t> distance2(n * k, -1);
+            const std::vector<uint32_t> uncertain = nearestOfEachByCells(grid, k, shift, neighbours, distance2);
+            ASSERT_TRUE(std::is_sorted(uncertain.begin(), uncertain.end()));
+            for (uint32_t v = 0; v < n; ++v) {
+                const bool certain = !std::binary_search(uncertain.begin(), uncertain.end(), v);
+                for (size_t j = 0; j < k; ++j) {
+                    if (certain) {
+                        ASSERT_EQ(neighbours[v * k + j], expected[v][j].second) << "vertex " << v << " neighbour " << j;
+                        ASSERT_EQ(distance2[v * k + j], expected[v][j].first);
+                    } else {
+                        ASSERT_EQ(neighbours[v * k + j], 12345u);
+                        ASSERT_EQ(distance2[v * k + j], -1);
+                    }
+                }
+            }
+            if (shift == 21) EXPECT_TRUE(uncertain.empty());  // one cell: the whole grid is every point's block
+        }
+    }
+    // On a scan's vertices, at the width it picks, the batch leaves a
+    // minority of points to the one-by-one search (bunny-lres, 2,583
+    // vertices at 12 bits: 20 %; on the corpus horse 5 %, igea 0.7 %).
+    const drm::Mesh bunny = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/bunny-lres.ply");
+    float low = bunny.positions[0], high = bunny.positions[0];
+    for (float c : bunny.positions) low = std::min(low, c), high = std::max(high, c);
+    std::vector<int32_t> scan(bunny.positions.size());
+    for (size_t i = 0; i < scan.size(); ++i) scan[i] = int32_t(std::lround((bunny.positions[i] - low) * 4095.0 / (high - low)));
+    std::vector<uint32_t> scanNeighbours(scan.size() / 3 * 8);
+    std::vector<int64_t> scanDistance2(scanNeighbours.size());
+    const size_t left = nearestOfEachByCells(scan, 8, -1, scanNeighbours, scanDistance2).size();
+    EXPECT_LT(double(left), 0.25 * double(scan.size() / 3)) << left << " of " << scan.size() / 3;
+    // Outside [0, 2^21) nothing is certified.
+    std::vector<int32_t> negative = {-1, 0, 0, 5, 5, 5, 6, 6, 6};
+    std::vector<uint32_t> neighbours(3, kNoVertex);
+    std::vector<int64_t> distance2(3, 0);
+    EXPECT_EQ(nearestOfEachByCells(negative, 1, -1, neighbours, distance2).size(), 3u);
 }
 
 TEST_P(BothIndexes, CollectNearHoldsEveryPresentVertexInTheBall) {

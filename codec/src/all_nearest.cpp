@@ -1,0 +1,198 @@
+#include "all_nearest.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace drm {
+namespace {
+
+constexpr int kCoordinateBits = 21;
+
+// x's low 21 bits spread out to every third bit (Morton order).
+uint64_t spread(uint64_t x) {
+    x &= 0x1FFFFF;
+    x = (x | x << 32) & 0x1F00000000FFFFull;
+    x = (x | x << 16) & 0x1F0000FF0000FFull;
+    x = (x | x << 8) & 0x100F00F00F00F00Full;
+    x = (x | x << 4) & 0x10C30C30C30C30C3ull;
+    x = (x | x << 2) & 0x1249249249249249ull;
+    return x;
+}
+uint64_t mortonOf(int64_t x, int64_t y, int64_t z) {
+    return spread(uint64_t(x)) | spread(uint64_t(y)) << 1 | spread(uint64_t(z)) << 2;
+}
+
+// The points in Morton order of their coordinates: a cell of any power-of-
+// two width is then one run, whose key is the point keys >> 3 * shift.
+struct SortedPoints {
+    std::vector<uint64_t> key;
+    std::vector<uint32_t> id;
+    std::vector<int32_t> at;  // x, y, z per point, in this order
+};
+
+SortedPoints sortByMorton(const std::vector<int32_t>& grid) {
+    const size_t n = grid.size() / 3;
+    std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
+    for (size_t v = 0; v < n; ++v)
+        keyed[v] = {mortonOf(grid[3 * v], grid[3 * v + 1], grid[3 * v + 2]), uint32_t(v)};
+    std::sort(keyed.begin(), keyed.end());
+    SortedPoints sorted;
+    sorted.key.resize(n);
+    sorted.id.resize(n);
+    sorted.at.resize(3 * n);
+    for (size_t i = 0; i < n; ++i) {
+        sorted.key[i] = keyed[i].first;
+        sorted.id[i] = keyed[i].second;
+        for (int c = 0; c < 3; ++c) sorted.at[3 * i + size_t(c)] = grid[3 * size_t(keyed[i].second) + size_t(c)];
+    }
+    return sorted;
+}
+
+int chooseShift(const SortedPoints& sorted, size_t k) {
+    // Two neighbours in Morton order share a cell of width 2^s exactly when
+    // their keys agree above bit 3s: one pass counts the cells at every width.
+    const size_t n = sorted.key.size();
+    size_t splitsFrom[kCoordinateBits + 1] = {};  // pairs first split at cell width 2^s
+    for (size_t i = 1; i < n; ++i) {
+        const uint64_t differ = sorted.key[i] ^ sorted.key[i - 1];
+        if (differ == 0) continue;
+        const int highest = 63 - __builtin_clzll(differ);
+        ++splitsFrom[highest / 3];
+    }
+    // cells(s) = 1 + the pairs that split at width 2^s or wider.
+    size_t cells = 1;
+    for (int s = kCoordinateBits; s >= 0; --s) cells += splitsFrom[s];
+    // Narrowest first: the first width whose cells hold k / 4 points (at
+    // least 2) on average (on a surface the block around a cell then holds about 4k:
+    // horse, k = 8, 2.5 points a cell, 30 a block, 5 % of the points
+    // uncertain; at twice the width, 121 a block and twice the time).
+    // Distinct positions, not points, count: a stack of coincident points
+    // does not make a cell any fuller around the others.
+    const size_t perCell = std::max<size_t>(2, k / 4), distinct = cells;
+    for (int s = 0; s <= kCoordinateBits; ++s) {
+        if (distinct >= perCell * cells) return s;
+        cells -= splitsFrom[s];
+    }
+    return kCoordinateBits;
+}
+
+}  // namespace
+
+std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, size_t k, int cellShift,
+                                           std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) {
+    const size_t n = grid.size() / 3;
+    std::vector<uint32_t> uncertain;
+    if (n == 0 || k == 0) return uncertain;
+    for (int32_t c : grid)
+        if (c < 0 || c >= int32_t(1) << kCoordinateBits) {
+            uncertain.resize(n);
+            for (size_t v = 0; v < n; ++v) uncertain[v] = uint32_t(v);
+            return uncertain;
+        }
+    const SortedPoints sorted = sortByMorton(grid);
+    const int shift = cellShift < 0 ? chooseShift(sorted, k) : std::min(cellShift, kCoordinateBits);
+    const int keyShift = 3 * shift;
+    auto cellKey = [&](size_t i) { return sorted.key[i] >> keyShift; };  // keyShift <= 63
+    // The cells as runs of the sorted points, found by their coordinates
+    // through an open-addressing table.
+    std::vector<uint32_t> cellStart;
+    for (size_t i = 0; i < n; ++i)
+        if (i == 0 || cellKey(i) != cellKey(i - 1)) cellStart.push_back(uint32_t(i));
+    const size_t cellCount = cellStart.size();
+    cellStart.push_back(uint32_t(n));
+    const int64_t lastCell = (int64_t(1) << kCoordinateBits >> shift) - 1;
+    auto packed = [](int64_t x, int64_t y, int64_t z) { return uint64_t(x) << 42 | uint64_t(y) << 21 | uint64_t(z); };
+    size_t tableSize = 16;
+    while (tableSize < 2 * cellCount) tableSize *= 2;
+    std::vector<uint64_t> tableKey(tableSize, ~uint64_t(0));
+    std::vector<uint32_t> tableCell(tableSize, 0);
+    auto slotOf = [&](uint64_t key) { return size_t((key * 0x9E3779B97F4A7C15ull) >> 20) & (tableSize - 1); };
+    for (size_t c = 0; c < cellCount; ++c) {
+        const int32_t* first = &sorted.at[3 * size_t(cellStart[c])];
+        const uint64_t key = packed(first[0] >> shift, first[1] >> shift, first[2] >> shift);
+        size_t slot = slotOf(key);
+        while (tableKey[slot] != ~uint64_t(0)) slot = (slot + 1) & (tableSize - 1);
+        tableKey[slot] = key;
+        tableCell[slot] = uint32_t(c);
+    }
+    auto findCell = [&](uint64_t key) -> int64_t {
+        for (size_t slot = slotOf(key);; slot = (slot + 1) & (tableSize - 1)) {
+            if (tableKey[slot] == key) return tableCell[slot];
+            if (tableKey[slot] == ~uint64_t(0)) return -1;
+        }
+    };
+
+    // The block's points, coordinates and indices in separate arrays.
+    std::vector<int32_t> bx, by, bz;
+    std::vector<uint32_t> bid;
+    // Each candidate as one sortable key: squared distance above, index
+    // below, so that key order is (distance, index) order.
+    std::vector<uint64_t> keys;
+    for (size_t c = 0; c < cellCount; ++c) {
+        const int32_t* first = &sorted.at[3 * size_t(cellStart[c])];
+        const int64_t cell[3] = {first[0] >> shift, first[1] >> shift, first[2] >> shift};
+        bx.clear();
+        by.clear();
+        bz.clear();
+        bid.clear();
+        for (int64_t dx = -1; dx <= 1; ++dx)
+            for (int64_t dy = -1; dy <= 1; ++dy)
+                for (int64_t dz = -1; dz <= 1; ++dz) {
+                    const int64_t x = cell[0] + dx, y = cell[1] + dy, z = cell[2] + dz;
+                    if (x < 0 || y < 0 || z < 0 || x > lastCell || y > lastCell || z > lastCell) continue;
+                    const int64_t found = findCell(packed(x, y, z));
+                    if (found < 0) continue;
+                    for (uint32_t i = cellStart[size_t(found)]; i < cellStart[size_t(found) + 1]; ++i) {
+                        bx.push_back(sorted.at[3 * size_t(i)]);
+                        by.push_back(sorted.at[3 * size_t(i) + 1]);
+                        bz.push_back(sorted.at[3 * size_t(i) + 2]);
+                        bid.push_back(sorted.id[i]);
+                    }
+                }
+        keys.resize(bx.size());
+        const int64_t width = int64_t(1) << shift;
+        for (uint32_t i = cellStart[c]; i < cellStart[c + 1]; ++i) {
+            const int32_t* p = &sorted.at[3 * size_t(i)];
+            const uint32_t self = sorted.id[i];
+            // Anything outside the block is at least this far along some
+            // axis: one step past the block's faces (none past the grid's).
+            int64_t clearance = INT64_MAX;
+            for (int a = 0; a < 3; ++a) {
+                if (cell[a] > 0) clearance = std::min(clearance, int64_t(p[a]) - (cell[a] - 1) * width + 1);
+                if (cell[a] < lastCell) clearance = std::min(clearance, (cell[a] + 2) * width - int64_t(p[a]));
+            }
+            // Only what lies nearer than that can be certain; keys need the
+            // distance below 2^31.
+            const int64_t limit = clearance == INT64_MAX ? INT64_MAX : clearance * clearance;
+            size_t m = 0;
+            bool far = false;
+            for (size_t j = 0; j < bx.size(); ++j) {
+                const int64_t ex = int64_t(bx[j]) - p[0], ey = int64_t(by[j]) - p[1], ez = int64_t(bz[j]) - p[2];
+                const int64_t d2 = ex * ex + ey * ey + ez * ez;
+                if (d2 >= limit) continue;
+                far |= d2 >= (int64_t(1) << 31);
+                keys[m++] = uint64_t(d2) << 32 | bid[j];
+            }
+            // The point itself is among them (distance 0), with k others.
+            if (far || m < k + 1) {
+                uncertain.push_back(self);
+                continue;
+            }
+            const auto begin = keys.begin(), end = keys.begin() + ptrdiff_t(m), kept = begin + ptrdiff_t(k) + 1;
+            if (m > k + 1) std::nth_element(begin, begin + ptrdiff_t(k), end);
+            std::sort(begin, kept);
+            // The k nearest others: the first k + 1 without the point
+            // itself, or the first k if k coincident points of lower
+            // index push it out.
+            std::remove(begin, kept, uint64_t(self));
+            for (size_t j = 0; j < k; ++j) {
+                neighbours[size_t(self) * k + j] = uint32_t(keys[j]);
+                distance2[size_t(self) * k + j] = int64_t(keys[j] >> 32);
+            }
+        }
+    }
+    std::sort(uncertain.begin(), uncertain.end());
+    return uncertain;
+}
+
+}  // namespace drm
