@@ -640,18 +640,12 @@ void writeTreeHeader(RangeEncoder& coder, int cellBits, bool flagChoices, bool f
     coder.encodeBits(frame ? 1 : 0, 1);  // G, from format 3
 }
 
-// A section's size as it was coded: RangeEncoder::bytesAtLeast after each
-// kProgressSteps-th of its vertices (the last entry after all of them), for
-// a rival tree to compare itself against at the same point.
-constexpr size_t kProgressSteps = 16;
-size_t progressStep(size_t n) { return (n + kProgressSteps - 1) / kProgressSteps; }
-
 // The section of a tree cheapestFirstTree grew: each vertex's unit of its
-// log, then the vertex's child count. `progress` gets the section's size as
-// it goes.
+// log, then the vertex's child count. `vertexBits` gets what each vertex
+// (by input index) cost, both together.
 std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const std::vector<std::vector<uint32_t>>& children,
                                     const std::vector<uint32_t>& order, bool flagChoices, bool frame,
-                                    std::vector<size_t>& progress) {
+                                    std::vector<float>& vertexBits) {
     RangeEncoder coder;
     Writer io{coder};
     writeTreeHeader(coder, cellBits, flagChoices, frame);
@@ -659,40 +653,48 @@ std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const st
     s.parentOf.reserve(order.size());
     s.childCountOf.reserve(order.size());
     TreeWalk walk;
+    vertexBits.assign(order.size(), 0.0f);
     size_t at = 0;
+    double before = coder.bitsSoFar();
     for (uint32_t self = 0; self < order.size(); ++self) {
         s.parentOf.push_back(walk.enter());
         at = log.replayInto(coder, at);
         const uint32_t count = uint32_t(children[order[self]].size());
         codeChildCount(io, s, self, count);
         walk.expect(self, count);
-        if ((self + 1) % progressStep(order.size()) == 0) progress.push_back(coder.bytesAtLeast());
+        const double after = coder.bitsSoFar();
+        vertexBits[order[self]] = float(after - before);
+        before = after;
     }
     return coder.finish();
 }
 
-// A tree whose section runs this much over its rival's at the same
-// fraction of the vertices, from kAbandonFromStep sixteenths on, is given up
-// on meshes of at least kAbandonFromVertices: the spanning tree against the
-// cheapest-first one. On the corpus at 12 bits, every mesh of that size
-// where the spanning tree wins (crank, octopus) stays within 3 % of the
-// cheapest-first tree from 3/16 of the way on, and the rest run 4 to 55 %
-// over (venus, horse, feline); igea, 2 to 4 % over at the end, is coded
-// to the end. Small meshes are left out: they cost little either way, and
-// there the spanning tree can win after trailing by 10 % (teapot).
-constexpr double kAbandonOverRival = 1.045;
-constexpr size_t kAbandonFromStep = 3;
+// The spanning tree against the cheapest-first one, on meshes of at least
+// kAbandonFromVertices: after each sixteenth of its vertices, from
+// kAbandonFromStep sixteenths on, it is given up if it has spent more than
+// kAbandonOverRival times what the cheapest-first section spent on the
+// same vertices. Compared vertex for vertex the two settle early: on the
+// corpus at 12 bits the large meshes where the spanning tree wins (crank,
+// octopus) stay under 1.00 from 4/16 on, those where it loses run over
+// 1.015 all the way (igea 1.03, bunny 1.02, horse 1.05); a comparison of
+// the sections' sizes at the same fraction of the way would compare
+// different vertices and could not tell igea from crank. Small meshes are
+// left out: they cost little either way, and there the spanning tree can
+// win after trailing by 10 % (teapot).
+constexpr size_t kSteps = 16;
+constexpr double kAbandonOverRival = 1.015;
+constexpr size_t kAbandonFromStep = 4;
 constexpr size_t kAbandonFromVertices = 16384;
 
 // The section of any tree: each vertex in preorder (a root raw, any other
-// as a predicted residual) with its child count. With a `rival` (another
-// section's progress and size), coding stops, returning nothing, once this
-// section must end larger than the rival, or runs far over it
-// (kAbandonOverRival).
+// as a predicted residual) with its child count. With a rival (another
+// section's size and cost per vertex, by input index), coding stops,
+// returning nothing, once this section must end larger than the rival, or
+// runs clearly over it on the same vertices (kAbandonOverRival).
 std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int cellBits,
                               const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order,
                               bool flagChoices, bool frame, uint64_t& framedResiduals,
-                              const std::vector<size_t>* rivalProgress = nullptr, size_t rivalSize = 0) {
+                              const std::vector<float>* rivalBits = nullptr, size_t rivalSize = 0) {
     const size_t n = order.size();
     RangeEncoder coder;
     Writer io{coder};
@@ -704,6 +706,9 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
     if (s.signContexts) s.signs.reserve(3 * n);
     s.childCountOf.reserve(n);
     TreeWalk walk;
+    const size_t step = (n + kSteps - 1) / kSteps;
+    const double start = coder.bitsSoFar();
+    double rivalSpent = 0;
     for (uint32_t self = 0; self < n; ++self) {
         const uint32_t vertex = order[self];
         const GridPoint at = gridPointOf(grid, vertex);
@@ -717,13 +722,13 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
         s.place(self, at);
         codeChildCount(io, s, self, uint32_t(children[vertex].size()));
         walk.expect(self, uint32_t(children[vertex].size()));
-        if (rivalProgress && (self + 1) % progressStep(n) == 0) {
-            const size_t bytes = coder.bytesAtLeast(), step = (self + 1) / progressStep(n);
-            if (bytes > rivalSize) return {};
-            if (n >= kAbandonFromVertices && step >= kAbandonFromStep && step <= rivalProgress->size() &&
-                double(bytes) > kAbandonOverRival * double((*rivalProgress)[step - 1]))
-                return {};
-        }
+        if (!rivalBits) continue;
+        rivalSpent += double((*rivalBits)[vertex]);
+        if ((self + 1) % step != 0) continue;
+        if (coder.bytesAtLeast() > rivalSize) return {};
+        if (n >= kAbandonFromVertices && (self + 1) / step >= kAbandonFromStep &&
+            coder.bitsSoFar() - start > kAbandonOverRival * rivalSpent)
+            return {};
     }
     framedResiduals = s.framedResiduals;
     return coder.finish();
@@ -778,8 +783,8 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         const std::vector<std::vector<uint32_t>> grown =
             cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals);
         coded.order = preorder(grown);
-        std::vector<size_t>& progress = trials->progress[(flagChoices ? 2 : 0) + (frame ? 1 : 0)];
-        coded.bytes = writeGrownTree(log, cellBits, grown, coded.order, flagChoices, frame, progress);
+        std::vector<float>& vertexBits = trials->vertexBits[(flagChoices ? 2 : 0) + (frame ? 1 : 0)];
+        coded.bytes = writeGrownTree(log, cellBits, grown, coded.order, flagChoices, frame, vertexBits);
         return coded;
     };
     auto spanningTree = [&](bool flagChoices, bool frame) {
@@ -790,13 +795,13 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         // Against the cheapest-first tree coded the same way, where it was.
         const int rivalKey = 4 + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
         const auto rival = trials->coded.find(rivalKey);
-        const auto rivalProgress = trials->progress.find(rivalKey - 4);
+        const auto rivalBits = trials->vertexBits.find(rivalKey - 4);
         const bool against = which == GeometryTree::Smaller && rival != trials->coded.end() &&
-                             rivalProgress != trials->progress.end();
+                             rivalBits != trials->vertexBits.end();
         GeometryEncoding coded;
         coded.order = preorder(spanning);
         coded.bytes = codeTree(grid, bits, cellBits, spanning, coded.order, flagChoices, frame, coded.framedResiduals,
-                               against ? &rivalProgress->second : nullptr, against ? rival->second.bytes.size() : 0);
+                               against ? &rivalBits->second : nullptr, against ? rival->second.bytes.size() : 0);
         return coded;
     };
     for (ChoiceCoding coding : {ChoiceCoding::Flags, ChoiceCoding::Symbol}) {

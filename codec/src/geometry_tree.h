@@ -47,9 +47,10 @@ struct GeometryTreeTrials {
     int bits = 0;
     std::shared_ptr<const NearestNeighbours> nearest;
     std::map<int, GeometryEncoding> coded;  // by tree, choice coding and frame (a key encodeGeometryTree forms)
-    // The cheapest-first sections' sizes as they were coded, by choice
-    // coding and frame: a spanning tree running far behind is given up.
-    std::map<int, std::vector<size_t>> progress;
+    // What each vertex (by input index) cost in the cheapest-first
+    // sections, in bits, by choice coding and frame: a spanning tree that
+    // codes the same vertices for clearly more is given up.
+    std::map<int, std::vector<float>> vertexBits;
 };
 
 // Codes the grid with each tree, choice coding and frame asked for and

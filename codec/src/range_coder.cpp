@@ -6,6 +6,7 @@
 #include "range_coder.h"
 
 #include <cassert>
+#include <cmath>
 #include <utility>
 
 namespace drm {
@@ -39,6 +40,8 @@ void RangeEncoder::encodeBits(uint32_t value, int count) {
     const uint32_t total = uint32_t(1) << count;
     encode(value & (total - 1), 1, total);
 }
+
+double RangeEncoder::bitsSoFar() const { return 8.0 * double(bytesAtLeast()) + 32.0 - std::log2(double(range_)); }
 
 void RangeEncoder::shiftLow() {
     // A top byte below 0xFF cannot be reached by a later carry (the carry

@@ -39,6 +39,11 @@ public:
     // later step keeps or adds to. An encoder comparing ways of coding can
     // stop one once this passes the best so far.
     size_t bytesAtLeast() const { return out_.size() + size_t(pendingFF_) + (cacheIsLeadingZero_ ? 0 : 1); }
+    // The information coded so far, in bits, to a fraction of a bit: the
+    // bytes shifted out and what the range has narrowed by since. The
+    // difference over a stretch of symbols is what they cost (for encoders
+    // comparing ways of coding the same symbols; not for the format).
+    double bitsSoFar() const;
 
 private:
     void shiftLow();
