@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -240,6 +241,33 @@ TEST(CodingLog, ReplayedUnitsCodeAsTheCallsThemselves) {
         EXPECT_EQ(at, log.size());
         EXPECT_EQ(replayed.finish(), direct.finish()) << "trial " << trial;
     }
+}
+
+// bitsSoFar measures what has been coded: over any stretch of symbols it
+// grows by their information (-log2 of each probability) to within the
+// coder's rounding, and the finished stream is as long as it says, to
+// within the bytes a flush adds or leaves off.
+TEST(RangeCoder, BitsSoFarIsTheInformationCoded) {
+    std::mt19937 rng(8);
+    const std::vector<Symbol> symbols = randomSymbols(rng, 20000);
+    drm::RangeEncoder encoder;
+    EXPECT_NEAR(encoder.bitsSoFar(), 0.0, 1e-6);
+    double information = 0, stretch = 0, stretchStart = 0;
+    for (size_t i = 0; i < symbols.size(); ++i) {
+        const Symbol& s = symbols[i];
+        encoder.encode(s.cum, s.freq, s.total);
+        const double bits = std::log2(double(s.total) / double(s.freq));
+        information += bits;
+        stretch += bits;
+        if (i % 1000 == 999) {
+            EXPECT_NEAR(encoder.bitsSoFar() - stretchStart, stretch, 0.5 + 0.001 * stretch) << "symbols to " << i;
+            stretchStart = encoder.bitsSoFar();
+            stretch = 0;
+        }
+    }
+    EXPECT_NEAR(encoder.bitsSoFar(), information, 1.0 + 0.001 * information);
+    const double said = encoder.bitsSoFar();
+    EXPECT_NEAR(8.0 * double(encoder.finish().size()), said, 32.0);
 }
 
 }  // namespace
