@@ -6,7 +6,6 @@
 #include "common.h"
 #include "predictor.h"
 #include "quantize.h"
-#include "traversal.h"
 
 namespace drm {
 
@@ -22,35 +21,29 @@ PredictorVotes countPredictorVotes(const std::vector<uint32_t>& t, size_t vertex
         nearestNeighbour2[b] = std::min(nearestNeighbour2[b], d2);
     }
 
+    // Each face votes once, through one of its edges (the k-th for face
+    // number k modulo 3), with its third vertex as the opposite and the
+    // apex of the face across as the target: as the traversal attaches
+    // each face through one edge, but without running it. The same winner
+    // as the traversal's votes on all 64 corpus meshes at 12 bits, for
+    // 138 M instructions instead of 363 M on igea.
     PredictorVotes votes;
-    Traversal traversal(vertexCount, faceCount, nullptr);
-    std::vector<uint8_t> attached(faceCount, 0);
     for (size_t f = 0; f < faceCount; ++f) {
-        if (attached[f]) continue;
-        attached[f] = 1;
-        traversal.startComponent(t[3 * f], t[3 * f + 1], t[3 * f + 2]);
-        OpenEdge edge;
-        while (traversal.popOpenEdge(edge)) {
-            uint32_t face = 0;
-            const uint32_t apex = topology.apexAcross(edge.vi, edge.vj, &face);
-            if (apex == kNoVertex) {
-                traversal.closeAsBoundary(edge);
-                continue;
-            }
-            const Vec3 a = gridPoint(grid, edge.vi), b = gridPoint(grid, edge.vj);
-            const Vec3 o = gridPoint(grid, edge.opposite), target = gridPoint(grid, apex);
-            const double parallelogram = norm2(parallelogramApex(a, b, o) - target);
-            const double midpoint = norm2(midpointApex(a, b, o) - target);
-            const bool parallelogramHits = parallelogram < nearestNeighbour2[apex];
-            const bool midpointHits = midpoint < nearestNeighbour2[apex];
-            if (parallelogramHits) ++votes.parallelogram;
-            if (midpointHits) ++votes.midpoint;
-            if (!parallelogramHits && !midpointHits) {
-                if (parallelogram < midpoint) ++votes.parallelogram;
-                else ++votes.midpoint;
-            }
-            traversal.attachApex(edge, apex);
-            attached[face] = 1;
+        const size_t k = f % 3;
+        const uint32_t vi = t[3 * f + k], vj = t[3 * f + (k + 1) % 3], opposite = t[3 * f + (k + 2) % 3];
+        const uint32_t apex = topology.apexAcross(vi, vj, nullptr);
+        if (apex == kNoVertex) continue;
+        const Vec3 a = gridPoint(grid, vi), b = gridPoint(grid, vj);
+        const Vec3 o = gridPoint(grid, opposite), target = gridPoint(grid, apex);
+        const double parallelogram = norm2(parallelogramApex(a, b, o) - target);
+        const double midpoint = norm2(midpointApex(a, b, o) - target);
+        const bool parallelogramHits = parallelogram < nearestNeighbour2[apex];
+        const bool midpointHits = midpoint < nearestNeighbour2[apex];
+        if (parallelogramHits) ++votes.parallelogram;
+        if (midpointHits) ++votes.midpoint;
+        if (!parallelogramHits && !midpointHits) {
+            if (parallelogram < midpoint) ++votes.parallelogram;
+            else ++votes.midpoint;
         }
     }
     return votes;

@@ -15,10 +15,12 @@ struct PredictorVotes {
     Predictor winner() const { return parallelogram > midpoint ? Predictor::Parallelogram : Predictor::Midpoint; }
 };
 
-// Runs the traversal over the faces (over vertexCount vertices) without any ranking and, for every
-// triangle it attaches, gives a vote to each base predictor that lands closer
-// to the true apex than any of the apex's neighbours; when neither does, the
-// nearer one gets the vote. Ties go to midpoint.
+// For every face (over vertexCount vertices) not on the boundary at its
+// chosen edge, with the face's third vertex opposite that edge and the
+// apex of the face across as the target, gives a vote to each base
+// predictor that lands closer to the apex than any of the apex's
+// neighbours; when neither does, the nearer one gets the vote. Ties go to
+// midpoint.
 PredictorVotes countPredictorVotes(const std::vector<uint32_t>& triangles, size_t vertexCount, const MeshTopology& topology,
                                    const std::vector<int32_t>& grid);
 
