@@ -14,45 +14,55 @@ struct Keyed {
     uint8_t shift;  // key[j] = face corner (shift + j) % 3
 };
 
-// The faces by key, faces with equal keys in face order. Keys are sorted
-// by a counting sort on the smallest vertex, then each run (the few faces
-// around one vertex) by the rest: a stable sort of all faces cost igea's
-// encoder 193 M instructions of its 6.3 G.
+// The faces by key, faces with equal keys in face order. A key begins with
+// its face's smallest vertex: a counting sort on that places every face,
+// then each run (the few faces around one vertex) is sorted by the rest. A
+// stable sort of all faces cost igea's encoder 193 M instructions of its
+// 6.3 G; this takes no more memory than the keys and one count a vertex
+// (the sort's buffer took half the keys again).
+Keyed keyOf(const std::vector<uint32_t>& t, uint32_t f) {
+    const uint32_t* c = &t[3 * size_t(f)];
+    Keyed best{{c[0], c[1], c[2]}, f, 0};
+    for (uint8_t r = 1; r < 3; ++r) {
+        const std::array<uint32_t, 3> k = {c[r], c[(r + 1) % 3], c[(r + 2) % 3]};
+        if (k < best.key) best = {k, f, r};
+    }
+    return best;
+}
+
 std::vector<Keyed> keyed(const std::vector<uint32_t>& t) {
     const size_t faces = t.size() / 3;
-    std::vector<Keyed> byFace(faces);
     uint32_t vertices = 0;
-    for (uint32_t f = 0; f < faces; ++f) {
-        const uint32_t* c = &t[3 * size_t(f)];
-        Keyed best{{c[0], c[1], c[2]}, f, 0};
-        for (uint8_t r = 1; r < 3; ++r) {
-            const std::array<uint32_t, 3> k = {c[r], c[(r + 1) % 3], c[(r + 2) % 3]};
-            if (k < best.key) best = {k, f, r};
-        }
-        byFace[f] = best;
-        vertices = std::max(vertices, best.key[0] + 1);
+    for (uint32_t v : t) vertices = std::max(vertices, v + 1);
+    // end[v]: where the faces whose smallest vertex is v end, once placed
+    // (they begin where those of v - 1 end).
+    std::vector<uint32_t> end(vertices, 0);
+    for (size_t f = 0; f < faces; ++f) ++end[std::min({t[3 * f], t[3 * f + 1], t[3 * f + 2]})];
+    uint32_t placed = 0;
+    for (uint32_t& e : end) {
+        const uint32_t count = e;
+        e = placed;  // for now where the run begins; placing moves it to the end
+        placed += count;
     }
-    std::vector<uint32_t> start(size_t(vertices) + 1, 0);
-    for (const Keyed& k : byFace) ++start[size_t(k.key[0]) + 1];
-    for (size_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
     std::vector<Keyed> out(faces);
-    {
-        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-        for (const Keyed& k : byFace) out[fill[k.key[0]]++] = k;  // in face order within each vertex
+    for (uint32_t f = 0; f < faces; ++f) {
+        const Keyed k = keyOf(t, f);
+        out[end[k.key[0]]++] = k;  // in face order within each vertex
     }
     // Each run by insertion, which keeps equal keys in face order; a long
     // run (a vertex shared by many faces: a cone's apex, a fan) by a stable
     // sort, so that no run costs its square.
     const auto byKey = [](const Keyed& a, const Keyed& b) { return a.key < b.key; };
     for (size_t v = 0; v < vertices; ++v) {
-        if (start[v + 1] - start[v] > 32) {
-            std::stable_sort(out.begin() + start[v], out.begin() + start[v + 1], byKey);
+        const size_t first = v == 0 ? 0 : end[v - 1], last = end[v];
+        if (last - first > 32) {
+            std::stable_sort(out.begin() + ptrdiff_t(first), out.begin() + ptrdiff_t(last), byKey);
             continue;
         }
-        for (size_t i = size_t(start[v]) + 1; i < start[v + 1]; ++i) {
+        for (size_t i = first + 1; i < last; ++i) {
             const Keyed moving = out[i];
             size_t j = i;
-            for (; j > start[v] && byKey(moving, out[j - 1]); --j) out[j] = out[j - 1];
+            for (; j > first && byKey(moving, out[j - 1]); --j) out[j] = out[j - 1];
             out[j] = moving;
         }
     }
