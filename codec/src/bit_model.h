@@ -48,7 +48,7 @@ public:
         return bit;
     }
 
-    // Learns `bit` without coding it (an encoder rehearsing its choices).
+    // Learns `bit` without coding it.
     void observe(int bit) { update(bit); }
 
     // The encoder's estimate of the cost of coding `bit`, in bits.
@@ -111,14 +111,6 @@ struct BasicWriter {
 };
 using Writer = BasicWriter<RangeEncoder>;
 using LogWriter = BasicWriter<CodingLog>;
-// An encoder's rehearsal: the models learn exactly as through a Writer,
-// nothing is written (to try an order of coding before committing to it).
-struct Rehearsal {
-    static constexpr bool kEncoding = true;
-    int bit(BitModel& m, int b) { m.observe(b); return b; }
-    uint32_t plain(uint32_t v, int count) { return v & uint32_t((uint64_t(1) << count) - 1); }
-    uint32_t symbol(AdaptiveFrequencies& m, uint32_t s) { m.observe(s); return s; }
-};
 struct Reader {
     RangeDecoder& coder;
     static constexpr bool kEncoding = false;

@@ -554,7 +554,7 @@ constexpr size_t kMaxNeighboursLooked = 32;
 // costs least to code next under the models as they stand (its best
 // prediction's residual plus naming that prediction); a vertex leaves the
 // stack when no neighbour is left undecoded. The coding is done as it
-// goes, so the models are those the section's own at each step (child
+// goes, so the models are the section's own at each step (child
 // counts aside: they have models of their own and do not steer the
 // choice). The decoder needs none of this: it reads the tree's shape from
 // the child counts. A minimum spanning tree orders by edge length; this
