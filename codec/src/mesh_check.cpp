@@ -64,13 +64,7 @@ std::string topologyProblem(const Mesh& mesh, MeshTopology* out) {
     return topologyProblem(mesh.triangles, mesh.vertexCount(), out);
 }
 
-std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, MeshTopology* out) {
-    const size_t faceCount = t.size() / 3;
-    for (size_t f = 0; f < faceCount; ++f) {
-        if (t[3 * f] == t[3 * f + 1] || t[3 * f + 1] == t[3 * f + 2] || t[3 * f] == t[3 * f + 2])
-            return (faceText(t, f) + " repeats a vertex index; such degenerate faces are not supported");
-    }
-
+void buildTopology(const std::vector<uint32_t>& t, size_t vertexCount, MeshTopology* out) {
     MeshTopology& topology = *out;
     topology.triangles = &t;
     std::vector<uint32_t>& start = topology.start;
@@ -81,22 +75,40 @@ std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, 
     edges.resize(t.size());
     {
         std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        const size_t faceCount = t.size() / 3;
         for (size_t f = 0; f < faceCount; ++f)
             for (int k = 0; k < 3; ++k) edges[fill[t[3 * f + k]]++] = {t[3 * f + (k + 1) % 3], uint32_t(f)};
     }
-    // Each vertex's edges by far end, then face; a far end met twice is a
-    // directed edge in two faces. The message names the pair a table built
-    // face by face would meet first: the later face smallest, and within it
-    // the first corner.
+    for (size_t v = 0; v < vertexCount; ++v) {
+        if (start[v + 1] - start[v] < 2) continue;  // (no faces at all: no array to point into)
+        std::sort(edges.data() + start[v], edges.data() + start[v + 1],
+                  [](const MeshTopology::Outgoing& x, const MeshTopology::Outgoing& y) {
+                      return x.to != y.to ? x.to < y.to : x.face < y.face;
+                  });
+    }
+}
+
+std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, MeshTopology* out) {
+    const size_t faceCount = t.size() / 3;
+    for (size_t f = 0; f < faceCount; ++f) {
+        if (t[3 * f] == t[3 * f + 1] || t[3 * f + 1] == t[3 * f + 2] || t[3 * f] == t[3 * f + 2])
+            return (faceText(t, f) + " repeats a vertex index; such degenerate faces are not supported");
+    }
+
+    MeshTopology& topology = *out;
+    buildTopology(t, vertexCount, &topology);
+    const std::vector<uint32_t>& start = topology.start;
+    const std::vector<MeshTopology::Outgoing>& edges = topology.out;
+    // Each vertex's edges are sorted by far end, then face; a far end met
+    // twice is a directed edge in two faces. The message names the pair a
+    // table built face by face would meet first: the later face smallest,
+    // and within it the first corner.
     size_t firstClash = SIZE_MAX, clashWith = 0;
     uint32_t clashFrom = 0, clashTo = 0;
     for (size_t v = 0; v < vertexCount; ++v) {
         if (start[v + 1] - start[v] < 2) continue;  // (no faces at all: no array to point into)
-        MeshTopology::Outgoing* first = edges.data() + start[v];
-        MeshTopology::Outgoing* last = edges.data() + start[v + 1];
-        std::sort(first, last, [](const MeshTopology::Outgoing& x, const MeshTopology::Outgoing& y) {
-            return x.to != y.to ? x.to < y.to : x.face < y.face;
-        });
+        const MeshTopology::Outgoing* first = edges.data() + start[v];
+        const MeshTopology::Outgoing* last = edges.data() + start[v + 1];
         for (const MeshTopology::Outgoing* e = first; e + 1 < last; ++e) {
             if (e[1].to != e->to) continue;
             int corner = 0;

@@ -51,6 +51,9 @@ MeshTopology checkMesh(const Mesh& mesh);
 // directed-edge table), otherwise the message checkMesh would throw.
 // Indices must already be in range (checkIndices).
 std::string topologyProblem(const Mesh& mesh, MeshTopology* topology);
+// Only the table, no check: for triangles known to pass topologyProblem
+// (the same faces under other vertex numbers, say). Indices in range.
+void buildTopology(const std::vector<uint32_t>& triangles, size_t vertexCount, MeshTopology* topology);
 std::string topologyProblem(const std::vector<uint32_t>& triangles, size_t vertexCount, MeshTopology* topology);
 
 }  // namespace drm
