@@ -117,15 +117,34 @@ std::vector<std::vector<uint32_t>> spanningForestOf(const std::vector<int32_t>& 
             if (!kept(v, w)) continue;
             edges.push_back({length2(uint32_t(v), w), uint32_t(std::min<size_t>(v, w)), uint32_t(std::max<size_t>(v, w))});
         }
-    std::sort(edges.begin(), edges.end(), [](const Edge<Length>& x, const Edge<Length>& y) {
+    // Kruskal's forest, compacted in place and trimmed (at most n - 1
+    // edges). Edges are taken shortest first, a chunk of n at a time: only
+    // the chunk is sorted, and once it is joined, the longer edges whose
+    // ends the forest already joins are dropped unsorted (most of them:
+    // sorting them all was most of the forest's cost). The order is strict
+    // (length, then ends), so this forest is the one a full sort gives.
+    const auto shorter = [](const Edge<Length>& x, const Edge<Length>& y) {
         return x.length2 != y.length2 ? x.length2 < y.length2 : (x.a != y.a ? x.a < y.a : x.b < y.b);
-    });
-    // Kruskal's forest, compacted in place and trimmed (at most n - 1 edges).
+    };
+    const size_t chunk = std::max<size_t>(n, 1024);
     size_t treeEdges = 0;
     {
         UnionFind sets(n);
-        for (const Edge<Length>& e : edges)
-            if (sets.join(e.a, e.b)) edges[treeEdges++] = e;
+        Edge<Length>* const all = edges.data();
+        Edge<Length>* first = all;
+        Edge<Length>* last = all + edges.size();
+        while (first != last) {
+            Edge<Length>* cut = last;
+            if (size_t(last - first) > chunk) {
+                cut = first + chunk;
+                std::nth_element(first, cut, last, shorter);
+            }
+            std::sort(first, cut, shorter);
+            for (const Edge<Length>* e = first; e != cut; ++e)
+                if (sets.join(e->a, e->b)) all[treeEdges++] = *e;  // never ahead of e
+            last = std::remove_if(cut, last, [&](const Edge<Length>& e) { return sets.root(e.a) == sets.root(e.b); });
+            first = cut;
+        }
     }
     edges.resize(treeEdges);
     edges.shrink_to_fit();

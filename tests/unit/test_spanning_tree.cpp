@@ -1,0 +1,88 @@
+// The minimum spanning forest of the nearest-neighbour graph is taken in
+// chunks of sorted edges (spanning_tree.cpp); it must be the very forest a
+// full sort gives, ties included: points on a coarse grid (many equal
+// lengths), clusters far apart (a forest, not a tree), and sizes on both
+// sides of the chunk.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "common.h"
+#include "spanning_tree.h"
+
+namespace drm {
+namespace {
+
+using EdgeSet = std::set<std::pair<uint32_t, uint32_t>>;
+
+// Kruskal over every edge of the graph, sorted at once by (squared length,
+// smaller end, larger end).
+EdgeSet fullySortedForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
+    const size_t n = grid.size() / 3, k = size_t(nearest.k);
+    struct Edge {
+        int64_t length2;
+        uint32_t a, b;
+    };
+    std::vector<Edge> edges;
+    EdgeSet seen;
+    for (size_t v = 0; v < n; ++v)
+        for (size_t j = 0; j < k; ++j) {
+            const uint32_t w = nearest.neighbours[v * k + j];
+            if (w == kNoVertex) continue;
+            const uint32_t a = std::min(uint32_t(v), w), b = std::max(uint32_t(v), w);
+            if (!seen.insert({a, b}).second) continue;
+            int64_t d2 = 0;
+            for (int c = 0; c < 3; ++c) {
+                const int64_t d = int64_t(grid[3 * a + size_t(c)]) - grid[3 * b + size_t(c)];
+                d2 += d * d;
+            }
+            edges.push_back({d2, a, b});
+        }
+    std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+        return x.length2 != y.length2 ? x.length2 < y.length2 : (x.a != y.a ? x.a < y.a : x.b < y.b);
+    });
+    UnionFind sets(n);
+    EdgeSet forest;
+    for (const Edge& e : edges)
+        if (sets.join(e.a, e.b)) forest.insert({e.a, e.b});
+    return forest;
+}
+
+EdgeSet edgesOf(const std::vector<std::vector<uint32_t>>& children) {
+    EdgeSet edges;
+    for (size_t v = 0; v < children.size(); ++v)
+        for (uint32_t c : children[v]) edges.insert({std::min(uint32_t(v), c), std::max(uint32_t(v), c)});
+    return edges;
+}
+
+std::vector<int32_t> clusteredPoints(size_t n, int clusters, int32_t side, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::vector<int32_t> grid;
+    for (size_t v = 0; v < n; ++v) {
+        const int32_t offset = int32_t(v % size_t(clusters)) * 1000;  // clusters far apart
+        for (int c = 0; c < 3; ++c) grid.push_back(offset + int32_t(rng() % uint32_t(side)));
+    }
+    return grid;
+}
+
+TEST(SpanningForest, IsTheForestOfAFullSortWithTiesAndSeveralComponents) {
+    for (const size_t n : {size_t(300), size_t(1500), size_t(6000)}) {
+        for (const int clusters : {1, 3}) {
+            const std::vector<int32_t> grid = clusteredPoints(n, clusters, 24, uint32_t(n) + uint32_t(clusters));
+            const NearestNeighbours nearest = nearestNeighbours(grid, NeighbourIndex::Grid, kNeighbours);
+            const EdgeSet expected = fullySortedForest(grid, nearest);
+            const EdgeSet found = edgesOf(spanningForest(grid, nearest));
+            EXPECT_EQ(found, expected) << n << " points in " << clusters << " clusters";
+            for (const auto& e : found)
+                EXPECT_EQ(e.first % size_t(clusters), e.second % size_t(clusters)) << "clusters far apart stay apart";
+        }
+    }
+}
+
+}  // namespace
+}  // namespace drm
