@@ -20,6 +20,10 @@ public:
         // them costs 3-12% (method notes).
         if (v == edge.vi || v == edge.vj || traversal_.isCulled(v)) return false;
         if (!topologicalFilter_) return true;
+        // A vertex not yet in the mesh has no edges, and the opposite
+        // vertex is in it: nothing below can refuse it (most candidates
+        // ahead of the front), so the edge look-ups are skipped.
+        if (!traversal_.isTouched(v)) return true;
         // The new triangle (vj, vi, v) adds the directed edges vi->v and
         // v->vj: neither may exist yet, as a rebuilt edge or as the missing
         // twin of a coded boundary.
