@@ -60,8 +60,13 @@ public:
             const RankedVertex c{fixedDistance2(point, p), v};
             if (ranked_.size() == count && !(c < ranked_.back())) return;
             if (!admissible_(v, edge)) return;  // edge look-ups: only for vertices that would enter
-            ranked_.insert(std::upper_bound(ranked_.begin(), ranked_.end(), c), c);
-            if (ranked_.size() > count) ranked_.pop_back();
+            // An insertion into a few, sorted: every candidate is offered
+            // once, so no two keys are equal.
+            size_t at = ranked_.size();
+            if (at < count) ranked_.push_back(c);
+            else --at;
+            for (; at > 0 && c < ranked_[at - 1]; --at) ranked_[at] = ranked_[at - 1];
+            ranked_[at] = c;
         });
         return ranked_;
     }
