@@ -124,12 +124,23 @@ VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
     }
     slotOf_.resize(n);
     cellOfVertex_.resize(n);
+    cellBoxes_.resize(6 * cellStart_.size());
     for (size_t c = 0; c < cellStart_.size(); ++c) {
         const uint32_t end = c + 1 < cellStart_.size() ? cellStart_[c + 1] : uint32_t(n);
         cellPresent_[c] = end - cellStart_[c];
+        int32_t* box = cellBoxes_.data() + 6 * c;
+        for (int k = 0; k < 3; ++k) {
+            box[k] = INT32_MAX;
+            box[3 + k] = INT32_MIN;
+        }
         for (uint32_t slot = cellStart_[c]; slot < end; ++slot) {
             slotOf_[slots_[slot]] = slot;
             cellOfVertex_[slots_[slot]] = uint32_t(c);
+            for (int k = 0; k < 3; ++k) {
+                const int32_t at = int32_t(int64_t(grid[3 * size_t(slots_[slot]) + size_t(k)]) - origin_);
+                box[k] = std::min(box[k], at);
+                box[3 + k] = std::max(box[3 + k], at);
+            }
         }
     }
     slotPoints_.resize(3 * n);

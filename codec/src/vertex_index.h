@@ -93,6 +93,12 @@ private:
         const int64_t lo = cell * cellWidth_ * kSubUnits, hi = lo + (cellWidth_ - 1) * kSubUnits;
         return p < lo ? lo - p : (p > hi ? p - hi : 0);
     }
+    // Fixed-point distance from p to [lo, hi] (grid units from the origin)
+    // along one axis (p relative to the origin).
+    static int64_t boxGap(int64_t p, int32_t lo, int32_t hi) {
+        const int64_t l = int64_t(lo) * kSubUnits, h = int64_t(hi) * kSubUnits;
+        return p < l ? l - p : (p > h ? p - h : 0);
+    }
     // Calls visit for the cells (x, y, z), z0 <= z <= z1 (or only z0 and z1
     // when capsOnly), within bound2 of p (relative to the origin).
     template <class Visit>
@@ -106,8 +112,15 @@ private:
             const int64_t z = cellZ_[c];
             if (z > z1) break;
             if (z < z0 || (capsOnly && z != z0 && z != z1) || cellPresent_[c] == 0) continue;
+            // The cell's own box first (cheap), then the box of the
+            // vertices it was built with: a surface fills a thin slice of
+            // a cell, so this one passes a third fewer cells around a ball.
             const int64_t gz = gap(p.z, z);
-            if (xy2 + gz * gz <= bound2)
+            if (xy2 + gz * gz > bound2) continue;
+            const int32_t* box = cellBoxes_.data() + 6 * size_t(c);
+            const int64_t bx = boxGap(p.x, box[0], box[3]), by = boxGap(p.y, box[1], box[4]),
+                          bz = boxGap(p.z, box[2], box[5]);
+            if (bx * bx + by * by + bz * bz <= bound2)
                 visit(slots_.data() + cellStart_[c], slotPoints_.data() + 3 * size_t(cellStart_[c]),
                       size_t(cellPresent_[c]));
         }
@@ -140,6 +153,10 @@ private:
     // The vertices of cell c are slots_[cellStart_[c] ..
     // cellStart_[c] + cellPresent_[c]): present ones first.
     std::vector<uint32_t> cellStart_, cellPresent_;
+    // Per cell, the smallest and largest x, y, z of its vertices (grid
+    // units from the origin), from all of them: removals leave it larger
+    // than it need be, never smaller.
+    std::vector<int32_t> cellBoxes_;
     std::vector<uint32_t> slots_, slotOf_, cellOfVertex_;
     std::vector<int32_t> slotPoints_;  // x, y, z of slots_[i] at 3 i: the cells' vertices are read in order
     // Every present vertex, for searches that would visit more cells than
