@@ -263,7 +263,17 @@ TEST(LoadMesh, ErrorsNameTheFileAndTheReason) {
     std::string byteIndices = square + "4 0 1 2 3\n";
     byteIndices.replace(byteIndices.find("uchar int"), 9, "uchar uchar");
     writeText(dir.file("byte-indices.ply"), byteIndices);
+    // Binary: a vertex block cut short inside its third vertex, and a face
+    // (read as little-endian ints) naming a vertex past the last.
+    const std::string binaryHeader =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    writeText(dir.file("binary-short.ply"), binaryHeader + std::string(30, '\0'));
+    const char face[] = {3, 0, 0, 0, 0, 1, 0, 0, 0, 7, 1, 0, 0};  // 3 corners: 0, 1, 263
+    writeText(dir.file("binary-index.ply"), binaryHeader + std::string(48, '\0') + std::string(face, sizeof face));
     const std::vector<std::pair<std::string, std::string>> cases = {
+        {"binary-short.ply", "the file ends inside vertex 2 (truncated?)"},
+        {"binary-index.ply", "face 0 refers to vertex 263"},
         {"missing.ply", "No such file"},
         {"empty.ply", "empty"},
         {"zeros.ply", "not a PLY file"},
