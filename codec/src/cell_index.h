@@ -82,8 +82,8 @@ public:
 
     void insert(uint32_t v, GridPoint at) {
         uint32_t& head = head_.at(key(at.x, at.y, at.z));
-        if (next_.size() <= v) next_.resize(size_t(v) + 1, kNoVertex);
-        next_[v] = head;
+        if (nodes_.size() <= v) nodes_.resize(size_t(v) + 1);
+        nodes_[v] = {at, head};
         head = v;
     }
 
@@ -92,30 +92,60 @@ public:
     // the neighbour on its nearer side), nearest first; ties go to the one
     // seen first: cells in corner order 0..7 (corner 0 is at's own cell; bit
     // 0 of the corner steps on x, bit 1 on y, bit 2 on z), each cell's
-    // vertices from the latest decoded down. Returns how many.
-    int nearest(const std::vector<GridPoint>& pos, uint32_t self, GridPoint at, GridPoint* near) const {
-        const int64_t side = int64_t(1) << cellBits_;
-        const int64_t half = side >> 1;
-        const int64_t step[3] = {(at.x & (side - 1)) < half ? -side : side, (at.y & (side - 1)) < half ? -side : side,
-                                 (at.z & (side - 1)) < half ? -side : side};
-        int64_t nearestD2[kNearest];
+    // vertices from the latest decoded down. Returns how many; `nearD2`
+    // gets their squared distances to `at`.
+    int nearest(uint32_t self, GridPoint at, GridPoint* near, int64_t* nearD2) const {
+        const int32_t side = int32_t(1) << cellBits_;
+        const int32_t at3[3] = {at.x, at.y, at.z};
+        int32_t step[3];
+        int64_t gap2[3];  // the least squared distance from `at` to the neighbour cell on each axis
+        for (int a = 0; a < 3; ++a) {
+            const int32_t offset = at3[a] & (side - 1);  // from the own cell's low side
+            const bool down = offset < side / 2;
+            const int64_t gap = down ? int64_t(offset) + 1 : int64_t(side - offset);  // integer coordinates
+            step[a] = down ? -side : side;
+            gap2[a] = gap * gap;
+        }
+        // The list so far, nearest first, padded with "farther than any"
+        // (squared distances of 21-bit coordinates are below 2^45): a vertex
+        // at the last entry's distance or farther can never enter it.
+        int64_t d2s[kNearest];
+        uint32_t vs[kNearest];
+        std::fill(d2s, d2s + kNearest, INT64_MAX);
         int count = 0;
         for (int corner = 0; corner < 8; ++corner) {
-            const int64_t x = at.x + ((corner & 1) ? step[0] : 0), y = at.y + ((corner & 2) ? step[1] : 0),
-                          z = at.z + ((corner & 4) ? step[2] : 0);
+            // A cell no nearer than the list's last entry cannot enter it
+            // (a tie goes to the one seen first): skipping it, and its
+            // look-up, changes nothing. On a surface most of the block's
+            // vertices are skipped so.
+            const int64_t least = ((corner & 1) ? gap2[0] : 0) + ((corner & 2) ? gap2[1] : 0) + ((corner & 4) ? gap2[2] : 0);
+            if (least >= d2s[kNearest - 1]) continue;
+            const int64_t x = int64_t(at.x) + ((corner & 1) ? step[0] : 0), y = int64_t(at.y) + ((corner & 2) ? step[1] : 0),
+                          z = int64_t(at.z) + ((corner & 4) ? step[2] : 0);
             if (x < 0 || y < 0 || z < 0 || x > kCoordinateMax || y > kCoordinateMax || z > kCoordinateMax) continue;
-            for (uint32_t v = head_.get(key(int32_t(x), int32_t(y), int32_t(z))); v != kNoVertex; v = next_[v]) {
-                if (v == self) continue;
-                const int64_t d2 = distance2(pos[v], at);
-                if (count == kNearest && d2 >= nearestD2[count - 1]) continue;
-                int i = count < kNearest ? count++ : count - 1;  // insertion into the sorted list
-                for (; i > 0 && nearestD2[i - 1] > d2; --i) {
-                    nearestD2[i] = nearestD2[i - 1];
-                    near[i] = near[i - 1];
+            for (uint32_t v = head_.get(key(int32_t(x), int32_t(y), int32_t(z))); v != kNoVertex;) {
+                const Node& node = nodes_[v];
+                // Coordinates below 2^21: differences fit in 32 bits.
+                const int64_t dx = node.at.x - at.x, dy = node.at.y - at.y, dz = node.at.z - at.z;
+                const int64_t d2 = dx * dx + dy * dy + dz * dz;
+                // `self` lies at `at` (0 away): tested only once a vertex
+                // would enter, which few do.
+                if (d2 < d2s[kNearest - 1] && v != self) {
+                    int i = kNearest - 1;  // insertion into the sorted list
+                    for (; i > 0 && d2s[i - 1] > d2; --i) {
+                        d2s[i] = d2s[i - 1];
+                        vs[i] = vs[i - 1];
+                    }
+                    d2s[i] = d2;
+                    vs[i] = v;
+                    count += count < kNearest ? 1 : 0;
                 }
-                nearestD2[i] = d2;
-                near[i] = pos[v];
+                v = node.next;
             }
+        }
+        for (int i = 0; i < count; ++i) {
+            near[i] = nodes_[vs[i]].at;
+            nearD2[i] = d2s[i];
         }
         return count;
     }
@@ -126,9 +156,13 @@ private:
         return (uint64_t(uint32_t(x) >> cellBits_) << 42) | (uint64_t(uint32_t(y) >> cellBits_) << 21) |
                uint64_t(uint32_t(z) >> cellBits_);
     }
+    struct Node {
+        GridPoint at;
+        uint32_t next;  // the vertex before this one in its cell
+    };
     int cellBits_;
-    CellHeads head_;                               // cell -> its latest vertex
-    std::vector<uint32_t> next_;                   // vertex -> the one before it in its cell
+    CellHeads head_;          // cell -> its latest vertex
+    std::vector<Node> nodes_;  // by vertex: where it is and the rest of its cell's list
 };
 
 }  // namespace drm

@@ -32,21 +32,21 @@ constexpr uint32_t kDirectChildCounts = 8;  // 0..7, then an escape
 constexpr int kMaxCandidates = 2 + kNearest + kNearest * (kNearest - 1);
 constexpr int kPaddedCandidates = (kMaxCandidates + 3) / 4 * 4;
 struct Predictions {
-    GridPoint candidate[kMaxCandidates];
-    int count = 0;
-    // The candidates again, one array per axis, padded with points far from
-    // every candidate: crowding is a short branch-free scan over them.
+    // The candidates, one array per axis, padded (pad()) with points far
+    // from every candidate: crowding is a short branch-free scan over them.
     static constexpr int32_t kFar = -(1 << 28);
     // Candidates lie within [-2^21, 2^22] (21-bit coordinates, reflections
     // and parallelograms of them): far from kFar, and crowded()'s
     // differences fit in int32.
     static_assert(kMaxQuantizationBits <= 21, "candidates must stay far from kFar");
     int32_t xs[kPaddedCandidates], ys[kPaddedCandidates], zs[kPaddedCandidates];
+    int count = 0;
     // The decoded points the candidates are built from, the parent first.
     GridPoint known[1 + kNearest];
     int knownCount = 0;
-    // The local spacing: the squared distance from the parent to the
-    // farthest of its near points (0 if it has none).
+    // The squared distance from the parent to the nearest of its near
+    // points, and to the farthest: the local spacing (0 if it has none).
+    int64_t nearest2 = 0;
     int64_t spacing2 = 0;
     // Two candidates crowd each other when no coordinate differs by more
     // than this: a fifth of the spacing.
@@ -58,17 +58,17 @@ struct Predictions {
     // encoder asks for it again when it codes the flag it priced.
     mutable int8_t flagContext[kMaxCandidates];
 
-    Predictions() {
-        std::fill(flagContext, flagContext + kMaxCandidates, int8_t(-1));
-        std::fill(xs, xs + kPaddedCandidates, kFar);
-        std::fill(ys, ys + kPaddedCandidates, kFar);
-        std::fill(zs, zs + kPaddedCandidates, kFar);
-    }
+    Predictions() { std::fill(flagContext, flagContext + kMaxCandidates, int8_t(-1)); }
+    GridPoint candidate(int c) const { return {xs[c], ys[c], zs[c]}; }
     void add(GridPoint c) {
         xs[count] = c.x;
         ys[count] = c.y;
         zs[count] = c.z;
-        candidate[count++] = c;
+        ++count;
+    }
+    // Once every candidate is in: the padding after them.
+    void pad() {
+        for (int k = count; k < kPaddedCandidates; ++k) xs[k] = ys[k] = zs[k] = kFar;
     }
 };
 
@@ -88,8 +88,14 @@ struct Predictions {
 constexpr int kDistanceBuckets = 4;
 int distanceBucket(const Predictions& p, int c) {
     if (p.spacing2 == 0) return kDistanceBuckets - 1;
-    int64_t nearest = INT64_MAX;
-    for (int k = c == 0 ? 1 : 0; k < p.knownCount; ++k) nearest = std::min(nearest, distance2(p.candidate[c], p.known[k]));
+    // The parent's nearest decoded point but itself is its nearest near
+    // point, whose distance predict() kept.
+    int64_t nearest = p.nearest2;
+    if (c != 0) {
+        const GridPoint at = p.candidate(c);
+        nearest = INT64_MAX;
+        for (int k = 0; k < p.knownCount; ++k) nearest = std::min(nearest, distance2(at, p.known[k]));
+    }
     if (16 * nearest < p.spacing2) return 0;
     if (4 * nearest < p.spacing2) return 1;
     if (nearest < p.spacing2) return 2;
@@ -99,24 +105,33 @@ int distanceBucket(const Predictions& p, int c) {
 // NEON on ARM, plain code elsewhere); the compilers left the scalar loop
 // unvectorized, at about 140 instructions a call.
 typedef uint32_t Lanes __attribute__((vector_size(16)));
+typedef int32_t SignedLanes __attribute__((vector_size(16)));
 int crowded(const Predictions& p, int c) {
-    const uint32_t x = uint32_t(p.candidate[c].x - p.crowdRadius), y = uint32_t(p.candidate[c].y - p.crowdRadius),
-                   z = uint32_t(p.candidate[c].z - p.crowdRadius);
-    const uint32_t width = uint32_t(2 * p.crowdRadius);
-    Lanes within = {0, 0, 0, 0};  // minus the count of candidates within, per lane: c itself and any other
+    // A candidate k lies within the radius of c on an axis when
+    // k - (c - radius), as unsigned, is at most twice the radius. SSE2
+    // compares signed lanes only: with the top bit flipped on both sides
+    // the unsigned comparison becomes a signed one, and flipping the top
+    // bit of a difference is subtracting the flipped subtrahend.
+    constexpr uint32_t kFlip = 0x80000000u;
+    const uint32_t x = (uint32_t(p.xs[c] - p.crowdRadius)) ^ kFlip, y = (uint32_t(p.ys[c] - p.crowdRadius)) ^ kFlip,
+                   z = (uint32_t(p.zs[c] - p.crowdRadius)) ^ kFlip;
+    const int32_t width = int32_t(uint32_t(2 * p.crowdRadius) ^ kFlip);
+    SignedLanes outside = {0, 0, 0, 0};  // minus the count of candidates outside c's box, per lane
     for (int k = 0; k < kPaddedCandidates; k += 4) {
         Lanes xs, ys, zs;
         std::memcpy(&xs, p.xs + k, sizeof xs);
         std::memcpy(&ys, p.ys + k, sizeof ys);
         std::memcpy(&zs, p.zs + k, sizeof zs);
-        within += Lanes((xs - x) <= width) & Lanes((ys - y) <= width) & Lanes((zs - z) <= width);
+        outside += (SignedLanes(xs - x) > width) | (SignedLanes(ys - y) > width) | (SignedLanes(zs - z) > width);
     }
-    return uint32_t(-(within[0] + within[1] + within[2] + within[3])) > 1 ? 1 : 0;
+    // c lies within its own box: crowded when another candidate does too.
+    const int32_t within = kPaddedCandidates + (outside[0] + outside[1] + outside[2] + outside[3]);
+    return within > 1 ? 1 : 0;
 }
 bool repeatsEarlier(const Predictions& p, int c) {
-    const GridPoint at = p.candidate[c];
+    const int32_t x = p.xs[c], y = p.ys[c], z = p.zs[c];
     for (int k = 0; k < c; ++k)
-        if (p.candidate[k].x == at.x && p.candidate[k].y == at.y && p.candidate[k].z == at.z) return true;
+        if (p.xs[k] == x && p.ys[k] == y && p.zs[k] == z) return true;
     return false;
 }
 // The last candidate that is not a repeat: it needs no flag.
@@ -276,13 +291,16 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     const uint32_t previous = self - 1;  // repeat the previous tree edge (regular samplings)
     p.add(s.parentOf[previous] != kNoVertex ? at + (s.pos[previous] - s.pos[s.parentOf[previous]]) : at);
     GridPoint near[kNearest];
-    const int m = s.cells.nearest(s.pos, parent, at, near);
+    int64_t nearD2[kNearest];
+    const int m = s.cells.nearest(parent, at, near, nearD2);
     for (int i = 0; i < m; ++i) p.add(at + (at - near[i]));
     for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j)
             if (i != j) p.add(at + (near[i] - near[j]));
-    if (s.choiceFlags || s.spacingContexts) p.spacing2 = m > 0 ? distance2(at, near[m - 1]) : 0;
+    p.pad();
+    if (s.choiceFlags || s.spacingContexts) p.spacing2 = m > 0 ? nearD2[m - 1] : 0;
     if (s.choiceFlags) {  // the flags' contexts
+        p.nearest2 = m > 0 ? nearD2[0] : 0;
         p.known[p.knownCount++] = at;
         for (int i = 0; i < m; ++i) p.known[p.knownCount++] = near[i];
         p.crowdRadius = int32_t(integerSqrt(uint64_t(p.spacing2)) / 5);
@@ -417,7 +435,7 @@ Pick bestPrediction(const Pricing& price, const Predictions& p, GridPoint actual
     double leastFrom[kMaxCandidates + 1];  // the least residual of candidates c and on
     leastFrom[p.count] = 1e300;
     for (int c = p.count - 1; c >= 0; --c) {
-        residual[c] = price.residual(actual - p.candidate[c], uint32_t(c));
+        residual[c] = price.residual(actual - p.candidate(c), uint32_t(c));
         leastFrom[c] = std::min(residual[c], leastFrom[c + 1]);
     }
     Pick best;
@@ -479,7 +497,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     if (Io::kEncoding) best = chosen != kNotChosen ? chosen : bestPrediction(Pricing(s, p, contexts), p, actual).candidate;
     const uint32_t choice = codeChoice(io, s, p, best);
     s.previousChoice = choice;
-    const GridPoint base = p.candidate[choice];
+    const GridPoint base = p.candidate(int(choice));
     const bool inFrame = framed(s.frameNow(), choice);
     s.framedResiduals += inFrame ? 1 : 0;
     GridPoint r = actual - base;
@@ -504,7 +522,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     // depends on the frame, so learning only from those would keep a frame
     // that is off from ever being tried (nefertiti-50k: -0.1 % instead of -5 %).
     if (s.framedParent)
-        s.frameScore = s.frameScore - s.frameScore / CodingState::kFrameMemory + 256 * frameAdvantage(p.frame, at - p.candidate[0]);
+        s.frameScore = s.frameScore - s.frameScore / CodingState::kFrameMemory + 256 * frameAdvantage(p.frame, at - p.candidate(0));
     return at;
 }
 
