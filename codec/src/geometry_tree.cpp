@@ -41,9 +41,14 @@ struct Predictions {
     static_assert(kMaxQuantizationBits <= 21, "candidates must stay far from kFar");
     int32_t xs[kPaddedCandidates], ys[kPaddedCandidates], zs[kPaddedCandidates];
     int count = 0;
-    // The decoded points the candidates are built from, the parent first.
-    GridPoint known[1 + kNearest];
-    int knownCount = 0;
+    // The decoded points the candidates are built from, the parent first,
+    // then the parent again in the place of near points it lacks (a point
+    // twice changes no least distance, and every entry is then worth
+    // looking at); as 64-bit coordinates, which distances are taken in.
+    struct Known {
+        int64_t x, y, z;
+    };
+    Known known[1 + kNearest];
     // The squared distance from the parent to the nearest of its near
     // points, and to the farthest: the local spacing (0 if it has none).
     int64_t nearest2 = 0;
@@ -92,9 +97,10 @@ int distanceBucket(const Predictions& p, int c) {
     // point, whose distance predict() kept.
     int64_t nearest = p.nearest2;
     if (c != 0) {
-        const GridPoint at = p.candidate(c);
+        const int64_t x = p.xs[c], y = p.ys[c], z = p.zs[c];
         nearest = INT64_MAX;
-        for (int k = 0; k < p.knownCount; ++k) nearest = std::min(nearest, distance2(at, p.known[k]));
+        for (const Predictions::Known& k : p.known)
+            nearest = std::min(nearest, (x - k.x) * (x - k.x) + (y - k.y) * (y - k.y) + (z - k.z) * (z - k.z));
     }
     if (16 * nearest < p.spacing2) return 0;
     if (4 * nearest < p.spacing2) return 1;
@@ -134,11 +140,15 @@ bool repeatsEarlier(const Predictions& p, int c) {
         if (p.xs[k] == x && p.ys[k] == y && p.zs[k] == z) return true;
     return false;
 }
-// The last candidate that is not a repeat: it needs no flag.
-int lastFlagged(const Predictions& p) {
-    int last = p.count - 1;
-    while (last > 0 && repeatsEarlier(p, last)) --last;
-    return last;
+// The first candidate after c that is not a repeat, or p.count if none
+// is: c is then the last candidate flags can name, and needs no flag of
+// its own. (Candidate 0 is never a repeat.) Usually the next one: asking
+// this as the flags go, instead of finding the last up front, looks at
+// only as many candidates as the flags reach.
+int nextFlagged(const Predictions& p, int c) {
+    int next = c + 1;
+    while (next < p.count && repeatsEarlier(p, next)) ++next;
+    return next;
 }
 
 // Format 2 also codes the residual from the parent itself (the whole tree
@@ -301,8 +311,10 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     if (s.choiceFlags || s.spacingContexts) p.spacing2 = m > 0 ? nearD2[m - 1] : 0;
     if (s.choiceFlags) {  // the flags' contexts
         p.nearest2 = m > 0 ? nearD2[0] : 0;
-        p.known[p.knownCount++] = at;
-        for (int i = 0; i < m; ++i) p.known[p.knownCount++] = near[i];
+        for (int i = 0; i <= kNearest; ++i) {
+            const GridPoint k = i > 0 && i <= m ? near[i - 1] : at;
+            p.known[i] = {k.x, k.y, k.z};
+        }
         p.crowdRadius = int32_t(integerSqrt(uint64_t(p.spacing2)) / 5);
     }
     if (s.framedParent) p.frame = surfaceFrame(at, near, m);
@@ -371,7 +383,6 @@ public:
             known_ = p.count;  // one symbol: no cost grows with c, 0 bounds them all
             return;
         }
-        last_ = lastFlagged(p);
     }
     double residual(GridPoint r, uint32_t c) const {
         const bool inFrame = framed(frameNow_, c);
@@ -397,10 +408,13 @@ private:
         for (; known_ <= c; ++known_) {
             const int k = known_;
             const double noSoFar = k == 0 ? 0 : noBefore_[k - 1];
-            if (k > last_ || repeatsEarlier(p_, k)) {
+            if (k != flagged_) {
                 choice_[k] = 1e300;  // never picked: an equal candidate comes first
                 noBefore_[k] = noSoFar;
-            } else if (k == last_) {
+                continue;
+            }
+            flagged_ = nextFlagged(p_, k);
+            if (flagged_ == p_.count) {  // the last: named by the "no" flags before it
                 choice_[k] = noSoFar;
                 noBefore_[k] = noSoFar;
             } else {
@@ -416,7 +430,7 @@ private:
     const ResidualCosts* axis_[kResidualGroups][3];
     bool version2_;
     bool frameNow_;
-    int last_ = 0;
+    mutable int flagged_ = 0;  // the next candidate, from known_ on, that is not a repeat (p.count: none)
     // Worked out so far: candidates 0 .. known_ - 1; noBefore_[k], the "no"
     // flags of candidates 0 .. k.
     mutable int known_ = 0;
@@ -477,10 +491,12 @@ uint32_t codeChoice(Io& io, CodingState& s, const Predictions& p, uint32_t best)
             throw Error(ErrorKind::Corrupt, "corrupt file: a geometry predictor choice is out of range");
         return choice;
     }
-    const int last = lastFlagged(p);
-    for (int c = 0; c < last; ++c)
-        if (!repeatsEarlier(p, c) && io.bit(flagOf(s, p, c), best == uint32_t(c))) return uint32_t(c);
-    return uint32_t(last);
+    // Each candidate that is not a repeat in turn, a flag for each but the last.
+    for (int c = 0;;) {
+        const int next = nextFlagged(p, c);
+        if (next == p.count || io.bit(flagOf(s, p, c), best == uint32_t(c))) return uint32_t(c);
+        c = next;
+    }
 }
 
 // Codes (or decodes) vertex `self`, a child of `parent`, from the
