@@ -40,10 +40,7 @@ public:
         update(bit);
     }
     int decode(RangeDecoder& coder) {
-        const uint32_t p1 = probabilityOfOne();
-        const int bit = coder.decodeFreq(kOne) >= kOne - p1 ? 1 : 0;
-        if (bit) coder.consume(kOne - p1, p1, kOne);
-        else coder.consume(0, kOne - p1, kOne);
+        const int bit = coder.decodeBinary(probabilityOfOne(), kOneBits);  // as encode() codes it
         update(bit);
         return bit;
     }
@@ -66,7 +63,8 @@ private:
         }();
         return table.data();
     }
-    static constexpr uint32_t kOne = 1u << 12;
+    static constexpr int kOneBits = 12;
+    static constexpr uint32_t kOne = 1u << kOneBits;
     static constexpr int kFast = 4, kSlow = 7;
     uint32_t probabilityOfOne() const {
         const uint32_t p = (fast_ + slow_) >> 5;  // two 16-bit estimates to 12 bits

@@ -82,8 +82,11 @@ public:
 
     void insert(uint32_t v, GridPoint at) {
         uint32_t& head = head_.at(key(at.x, at.y, at.z));
-        if (next_.size() <= v) next_.resize(size_t(v) + 1, kNoVertex);
-        next_[v] = head;
+        if (v == nodes_.size()) nodes_.push_back({at, head});  // the coders insert in order
+        else {
+            if (nodes_.size() < v) nodes_.resize(size_t(v) + 1);
+            nodes_[v] = {at, head};
+        }
         head = v;
     }
 
@@ -92,43 +95,90 @@ public:
     // the neighbour on its nearer side), nearest first; ties go to the one
     // seen first: cells in corner order 0..7 (corner 0 is at's own cell; bit
     // 0 of the corner steps on x, bit 1 on y, bit 2 on z), each cell's
-    // vertices from the latest decoded down. Returns how many.
-    int nearest(const std::vector<GridPoint>& pos, uint32_t self, GridPoint at, GridPoint* near) const {
-        const int64_t side = int64_t(1) << cellBits_;
-        const int64_t half = side >> 1;
-        const int64_t step[3] = {(at.x & (side - 1)) < half ? -side : side, (at.y & (side - 1)) < half ? -side : side,
-                                 (at.z & (side - 1)) < half ? -side : side};
-        int64_t nearestD2[kNearest];
+    // vertices from the latest decoded down. Returns how many; `nearD2`
+    // gets their squared distances to `at`.
+    int nearest(uint32_t self, GridPoint at, GridPoint* near, int64_t* nearD2) const {
+        // Per axis (x, y, z: corner bits 0, 1, 2): the own cell's and the
+        // neighbour's part of a key, whether the neighbour lies off the grid,
+        // and the least squared distance from `at` to the neighbour.
+        const int32_t side = int32_t(1) << cellBits_;
+        const int32_t at3[3] = {at.x, at.y, at.z};
+        uint64_t part[3][2];
+        int offGrid = 0;  // corner bits of the neighbours off the grid
+        int64_t gap2[3];
+        for (int a = 0; a < 3; ++a) {
+            const int32_t offset = at3[a] & (side - 1);  // from the own cell's low side
+            const bool down = offset < side / 2;
+            const int64_t gap = down ? int64_t(offset) + 1 : int64_t(side - offset);  // integer coordinates
+            gap2[a] = gap * gap;
+            const uint32_t cell = uint32_t(at3[a]) >> cellBits_;
+            const uint32_t neighbour = down ? cell - 1 : cell + 1;  // below 0: wraps, off the grid
+            if (neighbour >= (uint32_t(1) << (kCoordinateBits - cellBits_))) offGrid |= 1 << a;
+            part[a][0] = uint64_t(cell) << keyShift(a);
+            part[a][1] = uint64_t(neighbour) << keyShift(a);
+        }
+        int64_t least[8];  // per corner: the least squared distance from `at` to its cell
+        least[0] = 0;
+        for (int corner = 1; corner < 8; ++corner) least[corner] = least[corner & (corner - 1)] + gap2[__builtin_ctz(unsigned(corner))];
+        // The list so far, nearest first, padded with "farther than any"
+        // (squared distances of 21-bit coordinates are below 2^45): a vertex
+        // at the last entry's distance or farther can never enter it.
+        int64_t d2s[kNearest];
+        uint32_t vs[kNearest];
+        std::fill(d2s, d2s + kNearest, INT64_MAX);
+        int64_t last = INT64_MAX;  // d2s[kNearest - 1], kept at hand
         int count = 0;
+        const int64_t ax = at.x, ay = at.y, az = at.z;
         for (int corner = 0; corner < 8; ++corner) {
-            const int64_t x = at.x + ((corner & 1) ? step[0] : 0), y = at.y + ((corner & 2) ? step[1] : 0),
-                          z = at.z + ((corner & 4) ? step[2] : 0);
-            if (x < 0 || y < 0 || z < 0 || x > kCoordinateMax || y > kCoordinateMax || z > kCoordinateMax) continue;
-            for (uint32_t v = head_.get(key(int32_t(x), int32_t(y), int32_t(z))); v != kNoVertex; v = next_[v]) {
-                if (v == self) continue;
-                const int64_t d2 = distance2(pos[v], at);
-                if (count == kNearest && d2 >= nearestD2[count - 1]) continue;
-                int i = count < kNearest ? count++ : count - 1;  // insertion into the sorted list
-                for (; i > 0 && nearestD2[i - 1] > d2; --i) {
-                    nearestD2[i] = nearestD2[i - 1];
-                    near[i] = near[i - 1];
+            // A cell no nearer than the list's last entry cannot enter it
+            // (a tie goes to the one seen first): skipping it, and its
+            // look-up, changes nothing. On a surface most of the block's
+            // vertices are skipped so.
+            if (least[corner] >= last || (corner & offGrid) != 0) continue;
+            const uint64_t key = part[0][corner & 1] | part[1][(corner >> 1) & 1] | part[2][corner >> 2];
+            for (uint32_t v = head_.get(key); v != kNoVertex;) {
+                const Node& node = nodes_[v];
+                const int64_t dx = node.at.x - ax, dy = node.at.y - ay, dz = node.at.z - az;
+                const int64_t d2 = dx * dx + dy * dy + dz * dz;
+                // `self` lies at `at` (0 away): tested only once a vertex
+                // would enter, which few do.
+                if (d2 < last && v != self) {
+                    int i = kNearest - 1;  // insertion into the sorted list
+                    for (; i > 0 && d2s[i - 1] > d2; --i) {
+                        d2s[i] = d2s[i - 1];
+                        vs[i] = vs[i - 1];
+                    }
+                    d2s[i] = d2;
+                    vs[i] = v;
+                    count += count < kNearest ? 1 : 0;
+                    last = d2s[kNearest - 1];
                 }
-                nearestD2[i] = d2;
-                near[i] = pos[v];
+                v = node.next;
             }
+        }
+        for (int i = 0; i < count; ++i) {
+            near[i] = nodes_[vs[i]].at;
+            nearD2[i] = d2s[i];
         }
         return count;
     }
 
 private:
-    static constexpr int64_t kCoordinateMax = (int64_t(1) << 21) - 1;
-    uint64_t key(int32_t x, int32_t y, int32_t z) const {  // coordinates below 2^21: 21 bits each
-        return (uint64_t(uint32_t(x) >> cellBits_) << 42) | (uint64_t(uint32_t(y) >> cellBits_) << 21) |
+    // A cell's key: its x, y and z (coordinates below 2^21, over the cell
+    // size) in 21 bits each.
+    static constexpr int kCoordinateBits = 21;
+    static constexpr int keyShift(int axis) { return (2 - axis) * kCoordinateBits; }
+    uint64_t key(int32_t x, int32_t y, int32_t z) const {
+        return (uint64_t(uint32_t(x) >> cellBits_) << keyShift(0)) | (uint64_t(uint32_t(y) >> cellBits_) << keyShift(1)) |
                uint64_t(uint32_t(z) >> cellBits_);
     }
+    struct Node {
+        GridPoint at;
+        uint32_t next;  // the vertex before this one in its cell
+    };
     int cellBits_;
-    CellHeads head_;                               // cell -> its latest vertex
-    std::vector<uint32_t> next_;                   // vertex -> the one before it in its cell
+    CellHeads head_;          // cell -> its latest vertex
+    std::vector<Node> nodes_;  // by vertex: where it is and the rest of its cell's list
 };
 
 }  // namespace drm

@@ -32,21 +32,26 @@ constexpr uint32_t kDirectChildCounts = 8;  // 0..7, then an escape
 constexpr int kMaxCandidates = 2 + kNearest + kNearest * (kNearest - 1);
 constexpr int kPaddedCandidates = (kMaxCandidates + 3) / 4 * 4;
 struct Predictions {
-    GridPoint candidate[kMaxCandidates];
-    int count = 0;
-    // The candidates again, one array per axis, padded with points far from
-    // every candidate: crowding is a short branch-free scan over them.
+    // The candidates, one array per axis, padded (pad()) with points far
+    // from every candidate: crowding is a short branch-free scan over them.
     static constexpr int32_t kFar = -(1 << 28);
     // Candidates lie within [-2^21, 2^22] (21-bit coordinates, reflections
     // and parallelograms of them): far from kFar, and crowded()'s
     // differences fit in int32.
     static_assert(kMaxQuantizationBits <= 21, "candidates must stay far from kFar");
     int32_t xs[kPaddedCandidates], ys[kPaddedCandidates], zs[kPaddedCandidates];
-    // The decoded points the candidates are built from, the parent first.
-    GridPoint known[1 + kNearest];
-    int knownCount = 0;
-    // The local spacing: the squared distance from the parent to the
-    // farthest of its near points (0 if it has none).
+    int count = 0;
+    // The decoded points the candidates are built from, the parent first,
+    // then the parent again in the place of near points it lacks (a point
+    // twice changes no least distance, and every entry is then worth
+    // looking at); as 64-bit coordinates, which distances are taken in.
+    struct Known {
+        int64_t x, y, z;
+    };
+    Known known[1 + kNearest];
+    // The squared distance from the parent to the nearest of its near
+    // points, and to the farthest: the local spacing (0 if it has none).
+    int64_t nearest2 = 0;
     int64_t spacing2 = 0;
     // Two candidates crowd each other when no coordinate differs by more
     // than this: a fifth of the spacing.
@@ -58,17 +63,17 @@ struct Predictions {
     // encoder asks for it again when it codes the flag it priced.
     mutable int8_t flagContext[kMaxCandidates];
 
-    Predictions() {
-        std::fill(flagContext, flagContext + kMaxCandidates, int8_t(-1));
-        std::fill(xs, xs + kPaddedCandidates, kFar);
-        std::fill(ys, ys + kPaddedCandidates, kFar);
-        std::fill(zs, zs + kPaddedCandidates, kFar);
-    }
+    Predictions() { std::fill(flagContext, flagContext + kMaxCandidates, int8_t(-1)); }
+    GridPoint candidate(int c) const { return {xs[c], ys[c], zs[c]}; }
     void add(GridPoint c) {
         xs[count] = c.x;
         ys[count] = c.y;
         zs[count] = c.z;
-        candidate[count++] = c;
+        ++count;
+    }
+    // Once every candidate is in: the padding after them.
+    void pad() {
+        for (int k = count; k < kPaddedCandidates; ++k) xs[k] = ys[k] = zs[k] = kFar;
     }
 };
 
@@ -88,8 +93,15 @@ struct Predictions {
 constexpr int kDistanceBuckets = 4;
 int distanceBucket(const Predictions& p, int c) {
     if (p.spacing2 == 0) return kDistanceBuckets - 1;
-    int64_t nearest = INT64_MAX;
-    for (int k = c == 0 ? 1 : 0; k < p.knownCount; ++k) nearest = std::min(nearest, distance2(p.candidate[c], p.known[k]));
+    // The parent's nearest decoded point but itself is its nearest near
+    // point, whose distance predict() kept.
+    int64_t nearest = p.nearest2;
+    if (c != 0) {
+        const int64_t x = p.xs[c], y = p.ys[c], z = p.zs[c];
+        nearest = INT64_MAX;
+        for (const Predictions::Known& k : p.known)
+            nearest = std::min(nearest, (x - k.x) * (x - k.x) + (y - k.y) * (y - k.y) + (z - k.z) * (z - k.z));
+    }
     if (16 * nearest < p.spacing2) return 0;
     if (4 * nearest < p.spacing2) return 1;
     if (nearest < p.spacing2) return 2;
@@ -99,31 +111,44 @@ int distanceBucket(const Predictions& p, int c) {
 // NEON on ARM, plain code elsewhere); the compilers left the scalar loop
 // unvectorized, at about 140 instructions a call.
 typedef uint32_t Lanes __attribute__((vector_size(16)));
+typedef int32_t SignedLanes __attribute__((vector_size(16)));
 int crowded(const Predictions& p, int c) {
-    const uint32_t x = uint32_t(p.candidate[c].x - p.crowdRadius), y = uint32_t(p.candidate[c].y - p.crowdRadius),
-                   z = uint32_t(p.candidate[c].z - p.crowdRadius);
-    const uint32_t width = uint32_t(2 * p.crowdRadius);
-    Lanes within = {0, 0, 0, 0};  // minus the count of candidates within, per lane: c itself and any other
+    // A candidate k lies within the radius of c on an axis when
+    // k - (c - radius), as unsigned, is at most twice the radius. SSE2
+    // compares signed lanes only: with the top bit flipped on both sides
+    // the unsigned comparison becomes a signed one, and flipping the top
+    // bit of a difference is subtracting the flipped subtrahend.
+    constexpr uint32_t kFlip = 0x80000000u;
+    const uint32_t x = (uint32_t(p.xs[c] - p.crowdRadius)) ^ kFlip, y = (uint32_t(p.ys[c] - p.crowdRadius)) ^ kFlip,
+                   z = (uint32_t(p.zs[c] - p.crowdRadius)) ^ kFlip;
+    const int32_t width = int32_t(uint32_t(2 * p.crowdRadius) ^ kFlip);
+    SignedLanes outside = {0, 0, 0, 0};  // minus the count of candidates outside c's box, per lane
     for (int k = 0; k < kPaddedCandidates; k += 4) {
         Lanes xs, ys, zs;
         std::memcpy(&xs, p.xs + k, sizeof xs);
         std::memcpy(&ys, p.ys + k, sizeof ys);
         std::memcpy(&zs, p.zs + k, sizeof zs);
-        within += Lanes((xs - x) <= width) & Lanes((ys - y) <= width) & Lanes((zs - z) <= width);
+        outside += (SignedLanes(xs - x) > width) | (SignedLanes(ys - y) > width) | (SignedLanes(zs - z) > width);
     }
-    return uint32_t(-(within[0] + within[1] + within[2] + within[3])) > 1 ? 1 : 0;
+    // c lies within its own box: crowded when another candidate does too.
+    const int32_t within = kPaddedCandidates + (outside[0] + outside[1] + outside[2] + outside[3]);
+    return within > 1 ? 1 : 0;
 }
 bool repeatsEarlier(const Predictions& p, int c) {
-    const GridPoint at = p.candidate[c];
+    const int32_t x = p.xs[c], y = p.ys[c], z = p.zs[c];
     for (int k = 0; k < c; ++k)
-        if (p.candidate[k].x == at.x && p.candidate[k].y == at.y && p.candidate[k].z == at.z) return true;
+        if (p.xs[k] == x && p.ys[k] == y && p.zs[k] == z) return true;
     return false;
 }
-// The last candidate that is not a repeat: it needs no flag.
-int lastFlagged(const Predictions& p) {
-    int last = p.count - 1;
-    while (last > 0 && repeatsEarlier(p, last)) --last;
-    return last;
+// The first candidate after c that is not a repeat, or p.count if none
+// is: c is then the last candidate flags can name, and needs no flag of
+// its own. (Candidate 0 is never a repeat.) Usually the next one: asking
+// this as the flags go, instead of finding the last up front, looks at
+// only as many candidates as the flags reach.
+int nextFlagged(const Predictions& p, int c) {
+    int next = c + 1;
+    while (next < p.count && repeatsEarlier(p, next)) ++next;
+    return next;
 }
 
 // Format 2 also codes the residual from the parent itself (the whole tree
@@ -276,15 +301,20 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
     const uint32_t previous = self - 1;  // repeat the previous tree edge (regular samplings)
     p.add(s.parentOf[previous] != kNoVertex ? at + (s.pos[previous] - s.pos[s.parentOf[previous]]) : at);
     GridPoint near[kNearest];
-    const int m = s.cells.nearest(s.pos, parent, at, near);
+    int64_t nearD2[kNearest];
+    const int m = s.cells.nearest(parent, at, near, nearD2);
     for (int i = 0; i < m; ++i) p.add(at + (at - near[i]));
     for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j)
             if (i != j) p.add(at + (near[i] - near[j]));
-    if (s.choiceFlags || s.spacingContexts) p.spacing2 = m > 0 ? distance2(at, near[m - 1]) : 0;
+    p.pad();
+    if (s.choiceFlags || s.spacingContexts) p.spacing2 = m > 0 ? nearD2[m - 1] : 0;
     if (s.choiceFlags) {  // the flags' contexts
-        p.known[p.knownCount++] = at;
-        for (int i = 0; i < m; ++i) p.known[p.knownCount++] = near[i];
+        p.nearest2 = m > 0 ? nearD2[0] : 0;
+        for (int i = 0; i <= kNearest; ++i) {
+            const GridPoint k = i > 0 && i <= m ? near[i - 1] : at;
+            p.known[i] = {k.x, k.y, k.z};
+        }
         p.crowdRadius = int32_t(integerSqrt(uint64_t(p.spacing2)) / 5);
     }
     if (s.framedParent) p.frame = surfaceFrame(at, near, m);
@@ -353,7 +383,6 @@ public:
             known_ = p.count;  // one symbol: no cost grows with c, 0 bounds them all
             return;
         }
-        last_ = lastFlagged(p);
     }
     double residual(GridPoint r, uint32_t c) const {
         const bool inFrame = framed(frameNow_, c);
@@ -379,10 +408,13 @@ private:
         for (; known_ <= c; ++known_) {
             const int k = known_;
             const double noSoFar = k == 0 ? 0 : noBefore_[k - 1];
-            if (k > last_ || repeatsEarlier(p_, k)) {
+            if (k != flagged_) {
                 choice_[k] = 1e300;  // never picked: an equal candidate comes first
                 noBefore_[k] = noSoFar;
-            } else if (k == last_) {
+                continue;
+            }
+            flagged_ = nextFlagged(p_, k);
+            if (flagged_ == p_.count) {  // the last: named by the "no" flags before it
                 choice_[k] = noSoFar;
                 noBefore_[k] = noSoFar;
             } else {
@@ -398,7 +430,7 @@ private:
     const ResidualCosts* axis_[kResidualGroups][3];
     bool version2_;
     bool frameNow_;
-    int last_ = 0;
+    mutable int flagged_ = 0;  // the next candidate, from known_ on, that is not a repeat (p.count: none)
     // Worked out so far: candidates 0 .. known_ - 1; noBefore_[k], the "no"
     // flags of candidates 0 .. k.
     mutable int known_ = 0;
@@ -417,7 +449,7 @@ Pick bestPrediction(const Pricing& price, const Predictions& p, GridPoint actual
     double leastFrom[kMaxCandidates + 1];  // the least residual of candidates c and on
     leastFrom[p.count] = 1e300;
     for (int c = p.count - 1; c >= 0; --c) {
-        residual[c] = price.residual(actual - p.candidate[c], uint32_t(c));
+        residual[c] = price.residual(actual - p.candidate(c), uint32_t(c));
         leastFrom[c] = std::min(residual[c], leastFrom[c + 1]);
     }
     Pick best;
@@ -459,10 +491,12 @@ uint32_t codeChoice(Io& io, CodingState& s, const Predictions& p, uint32_t best)
             throw Error(ErrorKind::Corrupt, "corrupt file: a geometry predictor choice is out of range");
         return choice;
     }
-    const int last = lastFlagged(p);
-    for (int c = 0; c < last; ++c)
-        if (!repeatsEarlier(p, c) && io.bit(flagOf(s, p, c), best == uint32_t(c))) return uint32_t(c);
-    return uint32_t(last);
+    // Each candidate that is not a repeat in turn, a flag for each but the last.
+    for (int c = 0;;) {
+        const int next = nextFlagged(p, c);
+        if (next == p.count || io.bit(flagOf(s, p, c), best == uint32_t(c))) return uint32_t(c);
+        c = next;
+    }
 }
 
 // Codes (or decodes) vertex `self`, a child of `parent`, from the
@@ -479,7 +513,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     if (Io::kEncoding) best = chosen != kNotChosen ? chosen : bestPrediction(Pricing(s, p, contexts), p, actual).candidate;
     const uint32_t choice = codeChoice(io, s, p, best);
     s.previousChoice = choice;
-    const GridPoint base = p.candidate[choice];
+    const GridPoint base = p.candidate(int(choice));
     const bool inFrame = framed(s.frameNow(), choice);
     s.framedResiduals += inFrame ? 1 : 0;
     GridPoint r = actual - base;
@@ -504,7 +538,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     // depends on the frame, so learning only from those would keep a frame
     // that is off from ever being tried (nefertiti-50k: -0.1 % instead of -5 %).
     if (s.framedParent)
-        s.frameScore = s.frameScore - s.frameScore / CodingState::kFrameMemory + 256 * frameAdvantage(p.frame, at - p.candidate[0]);
+        s.frameScore = s.frameScore - s.frameScore / CodingState::kFrameMemory + 256 * frameAdvantage(p.frame, at - p.candidate(0));
     return at;
 }
 

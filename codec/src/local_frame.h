@@ -13,6 +13,7 @@
 #ifndef DRM_LOCAL_FRAME_H
 #define DRM_LOCAL_FRAME_H
 
+#include <algorithm>
 #include <cstdint>
 
 #include "common.h"
@@ -32,6 +33,24 @@ public:
         // 64, and the integer lengths below are exact to 2^-19 (a short
         // normal like (3, 7, 6) would turn several degrees off).
         if (nx == 0 && ny == 0 && nz == 0) return;
+        // The loops below halve or double one step at a time; most of the
+        // way is taken first in one shift, which the loops then finish
+        // exactly as before: fewer halvings than the largest component's
+        // excess bit length never bring it below the limit (floor(v / 2^k)
+        // is k halvings), and doubling the largest component 20 - its bit
+        // length times brings it to 2^19 or over, one less not.
+        const int length = bitLength(std::max(magnitude(nx), std::max(magnitude(ny), magnitude(nz))));
+        if (length > kNormalBits) {
+            const int k = length - kNormalBits;
+            nx = floorShift(nx, k);
+            ny = floorShift(ny, k);
+            nz = floorShift(nz, k);
+        } else if (length < kNormalBits) {
+            const int64_t scale = int64_t(1) << (kNormalBits - length);
+            nx *= scale;
+            ny *= scale;
+            nz *= scale;
+        }
         while (magnitude(nx) >= kNormalLimit || magnitude(ny) >= kNormalLimit || magnitude(nz) >= kNormalLimit) {
             nx = halve(nx);
             ny = halve(ny);
@@ -61,10 +80,15 @@ public:
     }
 
 private:
-    static constexpr int64_t kNormalLimit = int64_t(1) << 20;
+    static constexpr int kNormalBits = 20;
+    static constexpr int64_t kNormalLimit = int64_t(1) << kNormalBits;
     static constexpr int kFractionBits = 16;
     static uint64_t magnitude(int64_t v) { return v < 0 ? uint64_t(-v) : uint64_t(v); }
     static int64_t halve(int64_t v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }  // floor(v / 2)
+    // floor(v / 2^k), for 0 <= k < 63 and |v| below 2^62.
+    static int64_t floorShift(int64_t v, int k) {
+        return v >= 0 ? v >> k : -((-v + (int64_t(1) << k) - 1) >> k);
+    }
     // round(v / 2^16), halves up, for either sign.
     static int64_t roundFixed(int64_t v) {
         const int64_t biased = v + (int64_t(1) << (kFractionBits - 1));

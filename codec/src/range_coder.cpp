@@ -13,7 +13,7 @@ namespace drm {
 
 namespace {
 
-constexpr uint32_t kTop = uint32_t(1) << 24;  // range is renormalized to stay >= kTop
+constexpr uint32_t kTop = kRangeCoderTop;
 constexpr uint64_t kCarry = uint64_t(1) << 32;
 // finish() picks a final value whose low three bytes are zero and leaves
 // them off; the decoder reads them as the zeros it invents past the end.
@@ -75,11 +75,6 @@ std::vector<uint8_t> RangeEncoder::finish() {
 
 RangeDecoder::RangeDecoder(const uint8_t* data, size_t size) : data_(data), size_(size) {
     for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | nextByte();
-}
-
-uint8_t RangeDecoder::nextByte() {
-    const size_t at = pos_++;
-    return at < size_ ? data_[at] : 0;
 }
 
 void RangeDecoder::normalize() {

@@ -16,6 +16,8 @@ namespace drm {
 // Largest totalFreq the coders accept. The range never drops below 2^24, so
 // each of the up to 2^16 slots keeps at least 2^8 range values.
 constexpr uint32_t kRangeCoderMaxTotal = uint32_t(1) << 16;
+// The range is renormalized to stay at or above this.
+constexpr uint32_t kRangeCoderTop = uint32_t(1) << 24;
 
 class RangeEncoder {
 public:
@@ -97,6 +99,28 @@ public:
     // that owns that slot.
     uint32_t decodeFreq(uint32_t totalFreq);
     void consume(uint32_t cumFreq, uint32_t freq, uint32_t totalFreq);
+    // A binary decision over 2^totalBits slots (totalBits <= 16), the top
+    // `ofOne` of them (0 < ofOne < 2^totalBits) meaning 1: returns it,
+    // consumed. The same as decodeFreq and consume of the symbol owning
+    // the slot, without their divisions (slot >= t exactly when code >=
+    // t * step) or calls: adaptive bits are the decoders' commonest symbol.
+    int decodeBinary(uint32_t ofOne, int totalBits) {
+        const uint32_t step = range_ >> totalBits;
+        const uint32_t ofZero = step * ((uint32_t(1) << totalBits) - ofOne);
+        int bit = 0;
+        if (code_ >= ofZero) {  // the second symbol, the last: it takes the remainder
+            code_ -= ofZero;
+            range_ -= ofZero;
+            bit = 1;
+        } else {
+            range_ = ofZero;
+        }
+        while (range_ < kRangeCoderTop) {
+            range_ <<= 8;
+            code_ = (code_ << 8) | nextByte();
+        }
+        return bit;
+    }
     // Inverse of RangeEncoder::encodeBits.
     uint32_t decodeBits(int count);
     // Inverse of RangeEncoder::encodeWideBits.
@@ -108,7 +132,10 @@ public:
     size_t bytesPastEnd() const;
 
 private:
-    uint8_t nextByte();
+    uint8_t nextByte() {
+        const size_t at = pos_++;
+        return at < size_ ? data_[at] : 0;
+    }
     void normalize();
 
     const uint8_t* data_;
