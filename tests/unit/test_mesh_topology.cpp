@@ -1,7 +1,8 @@
 // MeshTopology, the encoder's table of directed edges, against a plain
 // search of the faces: every edge's face and apex, a hub vertex whose many
 // edges are searched by halving, and the message for a directed edge in two
-// faces, which names the pair met first face by face.
+// faces, which names the pair met first face by face; the table built
+// without the checks is the same.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -25,6 +26,16 @@ uint32_t faceBySearch(const std::vector<uint32_t>& t, uint32_t a, uint32_t b) {
 void expectAgreesWithSearch(const std::vector<uint32_t>& t, size_t vertexCount) {
     MeshTopology topology;
     ASSERT_EQ(topologyProblem(t, vertexCount, &topology), "");
+    // The table alone, unchecked (the encoder's for faces known to pass),
+    // is the same table.
+    MeshTopology unchecked;
+    buildTopology(t, vertexCount, &unchecked);
+    ASSERT_EQ(unchecked.start, topology.start);
+    ASSERT_EQ(unchecked.out.size(), topology.out.size());
+    for (size_t i = 0; i < topology.out.size(); ++i) {
+        ASSERT_EQ(unchecked.out[i].to, topology.out[i].to);
+        ASSERT_EQ(unchecked.out[i].face, topology.out[i].face);
+    }
     for (uint32_t a = 0; a < vertexCount; ++a)
         for (uint32_t b = 0; b < vertexCount; ++b) {
             const uint32_t expected = faceBySearch(t, a, b);
