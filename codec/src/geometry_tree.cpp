@@ -205,10 +205,19 @@ struct CodingState {
     };
     std::vector<KeptCosts> keptCosts;
     const ResidualCosts& residualCosts(int group, int a, int context) {
-        if (keptCosts.empty()) keptCosts.resize(kResidualGroups * 3 * kMagnitudeContexts);
+        if (keptCosts.empty()) {
+            keptCosts.resize(kResidualGroups * 3 * kMagnitudeContexts);
+            for (int g = 0; g < kResidualGroups; ++g)
+                for (int b = 0; b < 3; ++b)
+                    for (int k = 0; k < kMagnitudeContexts; ++k)
+                        keptCosts[size_t((g * 3 + b) * kMagnitudeContexts + k)].costs = ResidualCosts(axis[g][b], k);
+        }
         KeptCosts& kept = keptCosts[size_t((group * 3 + a) * kMagnitudeContexts + context)];
         const uint32_t now = residualsCoded[group][a][context];
-        if (kept.residualsCoded != now) kept = {ResidualCosts(axis[group][a], context), now};
+        if (kept.residualsCoded != now) {
+            kept.costs.forget();  // cheaper than a new one: the prices need not be cleared
+            kept.residualsCoded = now;
+        }
         return kept.costs;
     }
 
@@ -369,19 +378,19 @@ BitModel& flagOf(CodingState& s, const Predictions& p, int c) {
 // Naming candidate c with flags costs the "no" flags of the candidates
 // before it, each in a context that takes work to find (flagContextOf), so
 // those costs are worked out only as far as a pick needs them
-// (bestPrediction): most picks are settled by the first few candidates.
+// (cheapestPick): most picks are settled by the first few candidates.
+typedef int32_t Ints __attribute__((vector_size(16)));
+typedef float Floats __attribute__((vector_size(16)));
 class Pricing {
 public:
     Pricing(CodingState& s, const Predictions& p, const int (*contexts)[3])
-        : s_(s), p_(p), version2_(s.version2), frameNow_(s.frameNow()) {
+        : s_(s), p_(p), version2_(s.version2), frameNow_(s.frameNow()), flags_(s.choiceFlags) {
         for (int g = 0; g < kResidualGroups; ++g)
             for (int a = 0; a < 3; ++a) axis_[g][a] = &s.residualCosts(g, a, contexts[g][a]);
-        if (!s.choiceFlags) {
-            const AdaptiveFrequencies& model = s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
-            const double total = model.totalCount();
-            for (int c = 0; c < p.count; ++c) choice_[c] = std::log2(total / model.countOf(uint32_t(c)));
-            known_ = p.count;  // one symbol: no cost grows with c, 0 bounds them all
-            return;
+        others_ = axis_[residualGroup(version2_, 1)];
+        if (!flags_) {
+            symbols_ = &s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
+            symbolTotal_ = symbols_->totalCount();
         }
     }
     double residual(GridPoint r, uint32_t c) const {
@@ -390,23 +399,63 @@ public:
         if (inFrame) r = toFrame(p_.frame, r);
         return (*a[0])(r.x) + (*a[1])(r.y) + (*a[2])(r.z);
     }
+    // Every candidate's residual(actual - candidate, c) into residual[c],
+    // and leastFrom[c], the least of those from c on (leastFrom[count] is
+    // 1e300). Candidates 1 and on share their models and are never turned
+    // into the frame: their bit lengths come four at a time (the exponent of
+    // the float 2m + 1 is 127 plus m's bit length; m is below 2^23, so the
+    // float is exact), their tables are priced as far as the longest, and
+    // then each residual is three loads and the same sum as residual()'s.
+    void residuals(GridPoint actual, double* residual, double* leastFrom) const {
+        alignas(16) int32_t length[3][kPaddedCandidates];
+        const int32_t at[3] = {actual.x, actual.y, actual.z};
+        const int32_t* coordinates[3] = {p_.xs, p_.ys, p_.zs};
+        const double* table[3];
+        for (int a = 0; a < 3; ++a) {
+            Ints longest = {0, 0, 0, 0};  // the OR of the magnitudes: its bit length is the longest's
+            for (int k = 0; k < kPaddedCandidates; k += 4) {
+                Ints d;
+                std::memcpy(&d, coordinates[a] + k, sizeof d);
+                d = at[a] - d;
+                const Ints sign = d >> 31;
+                const Ints m = (d ^ sign) - sign;
+                const Ints n = (Ints(__builtin_convertvector(2 * m + 1, Floats)) >> 23) - 127;
+                std::memcpy(length[a] + k, &n, sizeof n);
+                const Ints index = {k, k + 1, k + 2, k + 3};
+                longest |= m & Ints((index >= 1) & (index < p_.count));  // candidates 1 .. count - 1
+            }
+            table[a] = others_[a]->upTo(lengthOf(longest[0] | longest[1] | longest[2] | longest[3]));
+        }
+        leastFrom[p_.count] = 1e300;
+        for (int c = p_.count - 1; c >= 1; --c) {
+            residual[c] = table[0][length[0][c]] + table[1][length[1][c]] + table[2][length[2][c]];
+            leastFrom[c] = std::min(residual[c], leastFrom[c + 1]);
+        }
+        residual[0] = this->residual(actual - p_.candidate(0), 0);
+        leastFrom[0] = std::min(residual[0], leastFrom[1]);
+    }
     // The cost of naming candidate c.
     double choice(int c) const {
-        knowUpTo(c);
+        if (known_ <= c) knowUpTo(c);
         return choice_[c];
     }
     // A floor under the cost of naming any candidate from c on: the "no"
     // flags of those before c (every later name pays them too).
     double choiceFloor(int c) const {
-        if (!s_.choiceFlags) return 0;
-        knowUpTo(c - 1);
-        return c <= 0 ? 0 : noBefore_[c - 1];
+        if (!flags_ || c <= 0) return 0;
+        if (known_ < c) knowUpTo(c - 1);
+        return noBefore_[c - 1];
     }
 
 private:
     void knowUpTo(int c) const {
         for (; known_ <= c; ++known_) {
             const int k = known_;
+            if (!flags_) {  // one symbol: no cost grows with c, 0 bounds them all
+                choice_[k] = std::log2(symbolTotal_ / symbols_->countOf(uint32_t(k)));
+                noBefore_[k] = 0;
+                continue;
+            }
             const double noSoFar = k == 0 ? 0 : noBefore_[k - 1];
             if (k != flagged_) {
                 choice_[k] = 1e300;  // never picked: an equal candidate comes first
@@ -428,8 +477,12 @@ private:
     CodingState& s_;
     const Predictions& p_;
     const ResidualCosts* axis_[kResidualGroups][3];
+    const ResidualCosts* const* others_;  // the models of candidates 1 and on
     bool version2_;
     bool frameNow_;
+    bool flags_;
+    const AdaptiveFrequencies* symbols_ = nullptr;  // one symbol: its table
+    double symbolTotal_ = 0;
     mutable int flagged_ = 0;  // the next candidate, from known_ on, that is not a repeat (p.count: none)
     // Worked out so far: candidates 0 .. known_ - 1; noBefore_[k], the "no"
     // flags of candidates 0 .. k.
@@ -438,30 +491,44 @@ private:
     mutable double noBefore_[kMaxCandidates];
 };
 
-// The encoder's pick: the candidate whose residual and choice cost least
-// (the first of equal ones), and that cost in bits.
+// The encoder's pick among vertices it might code next: the vertex and
+// candidate whose residual and choice cost least, and that cost in bits;
+// of equal ones the first vertex, then its first candidate (the pick of
+// pricing each vertex's candidates in turn, then keeping the first
+// cheapest vertex).
+constexpr int kMaxPricedTogether = 32;
 struct Pick {
     uint32_t candidate = 0;
     double bits = 1e300;
+    int vertex = 0;  // which of those priced
 };
-Pick bestPrediction(const Pricing& price, const Predictions& p, GridPoint actual) {
-    double residual[kMaxCandidates];
-    double leastFrom[kMaxCandidates + 1];  // the least residual of candidates c and on
-    leastFrom[p.count] = 1e300;
-    for (int c = p.count - 1; c >= 0; --c) {
-        residual[c] = price.residual(actual - p.candidate(c), uint32_t(c));
-        leastFrom[c] = std::min(residual[c], leastFrom[c + 1]);
-    }
+template <class PointOf>
+Pick cheapestPick(const Pricing& price, const Predictions& p, int n, PointOf pointOf) {
+    double residual[kMaxPricedTogether][kMaxCandidates];
+    double leastFrom[kMaxPricedTogether][kMaxCandidates + 1];  // the least residual of candidates c and on
+    for (int i = 0; i < n; ++i) price.residuals(pointOf(i), residual[i], leastFrom[i]);
+    // Candidate by candidate over all the vertices, so that each naming
+    // cost is worked out once, and only as far as any vertex needs it.
     Pick best;
     for (int c = 0; c < p.count; ++c) {
-        // No candidate from c on can cost less than this (rounding is
-        // monotonic: a sum of larger terms is no smaller), and a tie keeps
-        // the earlier pick: the pick is the one pricing them all would make.
-        if (leastFrom[c] + price.choiceFloor(c) >= best.bits) break;
-        const double cost = residual[c] + price.choice(c);
-        if (cost < best.bits) best = {uint32_t(c), cost};
+        const double floor = price.choiceFloor(c);
+        bool open = false;
+        for (int i = 0; i < n; ++i) {
+            // No candidate of vertex i from c on can cost less than this
+            // (rounding is monotonic: a sum of larger terms is no smaller);
+            // it could still win a tie if i comes before the best's vertex.
+            const double least = leastFrom[i][c] + floor;
+            if (least > best.bits || (least == best.bits && i >= best.vertex)) continue;
+            open = true;
+            const double cost = residual[i][c] + price.choice(c);
+            if (cost < best.bits || (cost == best.bits && i < best.vertex)) best = {uint32_t(c), cost, i};
+        }
+        if (!open) break;  // bounds only grow with c, and the best only falls
     }
     return best;
+}
+Pick bestPrediction(const Pricing& price, const Predictions& p, GridPoint actual) {
+    return cheapestPick(price, p, 1, [actual](int) { return actual; });
 }
 
 // Each residual group's context per axis. In format 3 the residual from the
@@ -582,6 +649,7 @@ constexpr int kTreeNeighbours = 4;  // 6 and 8 measured worse on most of the cor
 // which then have m neighbours each, and pricing them all at every step
 // would cost m^2).
 constexpr size_t kMaxNeighboursLooked = 32;
+static_assert(kMaxNeighboursLooked <= size_t(kMaxPricedTogether), "cheapestPick prices them together");
 
 // The encoder's tree, grown depth first over the neighbour graph: the next
 // child of the vertex on top of the stack is its undecoded neighbour that
@@ -642,16 +710,14 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
             int contexts[kResidualGroups][3];
             magnitudeContexts(s, p, self, top.decoded, contexts);
             const Pricing price(s, p, contexts);
-            uint32_t next = *first;  // *first is undecoded: a pick even if every price were NaN
-            Pick nextPick = bestPrediction(price, p, gridPointOf(grid, next));
-            for (const uint32_t* w = first + 1; w != last; ++w) {
-                if (done[*w]) continue;
-                const Pick pick = bestPrediction(price, p, gridPointOf(grid, *w));
-                if (pick.bits < nextPick.bits) {
-                    nextPick = pick;
-                    next = *w;
-                }
-            }
+            // *first is undecoded: the pick even if every price were NaN.
+            uint32_t undecoded[kMaxNeighboursLooked];
+            int count = 0;
+            for (const uint32_t* w = first; w != last; ++w)
+                if (!done[*w]) undecoded[count++] = *w;
+            const Pick nextPick =
+                cheapestPick(price, p, count, [&](int i) { return gridPointOf(grid, undecoded[i]); });
+            const uint32_t next = undecoded[nextPick.vertex];
             done[next] = 1;
             children[top.vertex].push_back(next);
             s.begin(top.decoded);

@@ -13,6 +13,9 @@
 namespace drm {
 
 inline uint32_t magnitudeOf(int32_t v) { return uint32_t(v < 0 ? -int64_t(v) : v); }
+// bitLength(magnitudeOf(v)) without a branch: 2m + 1 is never zero and has
+// one bit more than m.
+inline int lengthOf(int32_t v) { return 63 - __builtin_clzll(2 * uint64_t(magnitudeOf(v)) + 1); }
 
 constexpr int kMagnitudeContexts = 8;
 constexpr int kMaxLength = 23;      // bit lengths of residuals of 21-bit coordinates
@@ -76,6 +79,14 @@ public:
         if (n > priced_) priceUpTo(n);
         return ofLength_[n];
     }
+    // The prices of lengths 0 .. n, by length (lengthOf): for a caller that
+    // knows the longest residual it will price, each price is then one load.
+    const double* upTo(int n) const {
+        if (n > priced_) priceUpTo(n);
+        return ofLength_;
+    }
+    // The models changed: every price is to be worked out again.
+    void forget() { priced_ = -1; }
 
 private:
     void priceUpTo(int n) const {
