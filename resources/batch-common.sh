@@ -32,10 +32,19 @@ batch_usage() {
 # batch_display "$@": without an X display, runs the calling script again
 # under one xvfb-run for the whole batch (one virtual display, not one per
 # file: faster, and fewer chances to race other xvfb-run -a for a number).
+# The batch's own exit status is passed back through a file: xvfb-run exits
+# 5, whatever the batch did, when it fails to remove its temporary folder
+# afterwards (it stops the X server only after that; seen under load).
 batch_display() {
   [ -z "${DISPLAY:-}" ] || return 0
   command -v xvfb-run >/dev/null || batch_fail "no DISPLAY and no xvfb-run (apt-get install xvfb xauth)"
-  exec xvfb-run -a bash "$0" "$@"
+  local status code
+  status=$(mktemp) || batch_fail "cannot create a temporary file"
+  code=0
+  xvfb-run -a env BATCH_STATUS_FILE="$status" bash -c 'bash "$0" "$@"; echo $? >"$BATCH_STATUS_FILE"' "$0" "$@" || code=$?
+  if [ -s "$status" ]; then code=$(cat "$status"); fi
+  rm -f "$status"
+  exit "$code"
 }
 
 # batch_arguments "$@": sets batch_stop_on_error and batch_args (DIR OUTDIR).

@@ -24,11 +24,23 @@ cd "$work" || exit 1
 
 fail() { echo "FAIL [$case_name]: $*" >&2; exit 1; }
 
+# xrun COMMAND...: xvfb-run -a COMMAND, returning COMMAND's own exit
+# status: xvfb-run exits 5, whatever the command did, when it fails to
+# remove its temporary folder afterwards (seen under load).
+xrun() {
+    local status="$work/xrun.status" code
+    rm -f "$status"
+    xvfb-run -a env XRUN_STATUS="$status" bash -c '"$@"; echo $? >"$XRUN_STATUS"' xrun "$@"
+    code=$?
+    if [ -s "$status" ]; then code=$(cat "$status"); fi
+    return "$code"
+}
+
 # server EXPECTED_CODE ARGS...: runs meshlabserver, output in server.txt.
 server() {
     local expected=$1
     shift
-    xvfb-run -a "$server" "$@" >server.txt 2>&1
+    xrun "$server" "$@" >server.txt 2>&1
     local code=$?
     if [ "$code" -ge 128 ] && [ "$code" -ne 255 ]; then
         fail "meshlabserver $* crashed (exit $code): $(tail -5 server.txt)"
@@ -218,7 +230,7 @@ corrupt_drm)
         [ ! -e "$f.ply" ] || fail "$f.ply was written"
         echo "corrupt_drm: $(grep '^drm: error:' server.txt | head -1)"
     done
-    xvfb-run -a "$server" -i "$work/flipped.drm" -o "$work/flipped.ply" >server.txt 2>&1
+    xrun "$server" -i "$work/flipped.drm" -o "$work/flipped.ply" >server.txt 2>&1
     code=$?
     [ "$code" -eq 0 ] || [ "$code" -eq 255 ] || fail "flipped.drm: meshlabserver exited $code: $(tail -5 server.txt)"
     echo "corrupt_drm: flipped byte -> exit $code: $(grep '^drm: error:' server.txt | head -1)"
