@@ -144,20 +144,43 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
     // kept sorted by insertion: a block holds a few dozen points, most of
     // them farther than the running (k + 1)-th and dismissed by one compare.
     std::vector<uint64_t> best(k + 1);
+    // The 26 other cells' keys less the cell's own, in the order above
+    // (modulo 2^64: a step down borrows from the fields above, which the
+    // cell's own key pays back).
+    uint64_t neighbourOffsets[26];
+    size_t offsetCount = 0;
+    for (int64_t dx = -1; dx <= 1; ++dx)
+        for (int64_t dy = -1; dy <= 1; ++dy)
+            for (int64_t dz = -1; dz <= 1; ++dz)
+                if (dx != 0 || dy != 0 || dz != 0)
+                    neighbourOffsets[offsetCount++] = uint64_t(dx) * (uint64_t(1) << 42) +
+                                                      uint64_t(dy) * (uint64_t(1) << 21) + uint64_t(dz);
     for (size_t c = 0; c < cellCount; ++c) {
         const int32_t* first = &sorted.at[3 * size_t(cellStart[c])];
         const int64_t cell[3] = {first[0] >> shift, first[1] >> shift, first[2] >> shift};
         size_t runCount = 0;
         runs[runCount++] = {cellStart[c], cellStart[c + 1]};
-        for (int64_t dx = -1; dx <= 1; ++dx)
-            for (int64_t dy = -1; dy <= 1; ++dy)
-                for (int64_t dz = -1; dz <= 1; ++dz) {
-                    if (dx == 0 && dy == 0 && dz == 0) continue;
-                    const int64_t x = cell[0] + dx, y = cell[1] + dy, z = cell[2] + dz;
-                    if (x < 0 || y < 0 || z < 0 || x > lastCell || y > lastCell || z > lastCell) continue;
-                    const int64_t found = findCell(packed(x, y, z));
-                    if (found >= 0) runs[runCount++] = {cellStart[size_t(found)], cellStart[size_t(found) + 1]};
-                }
+        auto addCell = [&](uint64_t key) {
+            const int64_t found = findCell(key);
+            if (found >= 0) runs[runCount++] = {cellStart[size_t(found)], cellStart[size_t(found) + 1]};
+        };
+        if (cell[0] > 0 && cell[1] > 0 && cell[2] > 0 && cell[0] < lastCell && cell[1] < lastCell &&
+            cell[2] < lastCell) {
+            // Inside the grid (nearly every cell) no neighbour's field of
+            // the packed key under- or overflows into the next: each is the
+            // cell's key plus a fixed offset.
+            const uint64_t key = packed(cell[0], cell[1], cell[2]);
+            for (uint64_t offset : neighbourOffsets) addCell(key + offset);
+        } else {
+            for (int64_t dx = -1; dx <= 1; ++dx)
+                for (int64_t dy = -1; dy <= 1; ++dy)
+                    for (int64_t dz = -1; dz <= 1; ++dz) {
+                        if (dx == 0 && dy == 0 && dz == 0) continue;
+                        const int64_t x = cell[0] + dx, y = cell[1] + dy, z = cell[2] + dz;
+                        if (x < 0 || y < 0 || z < 0 || x > lastCell || y > lastCell || z > lastCell) continue;
+                        addCell(packed(x, y, z));
+                    }
+        }
         const int64_t width = int64_t(1) << shift;
         for (uint32_t i = cellStart[c]; i < cellStart[c + 1]; ++i) {
             const int32_t* p = &sorted.at[3 * size_t(i)];
