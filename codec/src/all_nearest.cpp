@@ -132,7 +132,8 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
 
     // The block's cells as runs of the sorted points, read in place (copying
     // them out cost more than the distances). The point's own cell first:
-    // its nearest are mostly there, and once found they keep the rest out.
+    // its nearest are often there, and once found they keep more of the
+    // rest out (a few per cent fewer insertions on igea).
     struct Run {
         uint32_t begin, end;
     };
@@ -143,7 +144,10 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
     // above, index below, so that key order is (distance, index) order),
     // kept sorted by insertion: a block holds a few dozen points, most of
     // them farther than the running (k + 1)-th and dismissed by one compare.
-    std::vector<uint64_t> best(k + 1);
+    // best[-1] holds 0, no key above it, so that the insertion stops there
+    // without testing the index.
+    std::vector<uint64_t> slots(k + 2, 0);
+    uint64_t* const best = slots.data() + 1;
     // The 26 other cells' keys less the cell's own, in the order above
     // (modulo 2^64: a step down borrows from the fields above, which the
     // cell's own key pays back).
@@ -220,7 +224,7 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
                         if (key >= best[k]) continue;
                         at = k;
                     }
-                    for (; at > 0 && best[at - 1] > key; --at) best[at] = best[at - 1];
+                    for (; best[at - 1] > key; --at) best[at] = best[at - 1];
                     best[at] = key;
                     if (kept > k) bound = int64_t(best[k] >> 32);
                 }
@@ -233,7 +237,7 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
             // The k nearest others: the first k + 1 without the point
             // itself, or the first k if k coincident points of lower
             // index push it out.
-            std::remove(best.begin(), best.end(), uint64_t(self));
+            std::remove(best, best + k + 1, uint64_t(self));
             for (size_t j = 0; j < k; ++j) {
                 neighbours[size_t(self) * k + j] = uint32_t(best[j]);
                 distance2[size_t(self) * k + j] = int64_t(best[j] >> 32);
