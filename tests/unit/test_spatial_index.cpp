@@ -180,6 +180,34 @@ TEST(AllNearest, CertifiedPointsHaveExactlyTheirNearestAtEveryCellWidth) {
     EXPECT_EQ(nearestOfEachByCells(negative, 1, -1, neighbours, distance2).size(), 3u);
 }
 
+// Squared distances of 2^31 or more do not fit the batch's sort keys: such
+// block points are left out like points outside the block, which still
+// certifies a point whose k + 1 nearest (itself included) all lie nearer,
+// and no point whose k-th does not. Two clusters at opposite corners of the
+// 2^21 grid, a lone point between them, and one cell holding all of them.
+TEST(AllNearest, FarBlockPointsNeverEnterAndNeverWrongACertifiedPoint) {
+    const int32_t top = (1 << 21) - 1;
+    std::vector<int32_t> grid;
+    for (int i = 0; i < 12; ++i) grid.insert(grid.end(), {i % 3, i / 3, i % 2});
+    for (int i = 0; i < 12; ++i) grid.insert(grid.end(), {top - i % 3, top - i / 3, top - i % 2});
+    grid.insert(grid.end(), {top / 2, top / 2, top / 2});
+    const size_t n = grid.size() / 3, k = 8;
+    std::vector<uint32_t> neighbours(n * k, 12345);
+    std::vector<int64_t> distance2(n * k, -1);
+    const std::vector<uint32_t> uncertain = nearestOfEachByCells(grid, k, 21, neighbours, distance2);
+    EXPECT_EQ(uncertain, std::vector<uint32_t>{uint32_t(n - 1)});  // only the lone point's neighbours are all far
+    for (uint32_t v = 0; v + 1 < n; ++v) {
+        std::vector<RankedVertex> expected;
+        for (uint32_t w = 0; w < n; ++w)
+            if (w != v) expected.emplace_back(fixedDistance2(grid, fixedPointOf(grid, v), w) / (kSubUnits * kSubUnits), w);
+        std::sort(expected.begin(), expected.end());
+        for (size_t j = 0; j < k; ++j) {
+            ASSERT_EQ(neighbours[v * k + j], expected[j].second) << "vertex " << v << " neighbour " << j;
+            ASSERT_EQ(distance2[v * k + j], expected[j].first);
+        }
+    }
+}
+
 TEST_P(BothIndexes, CollectNearHoldsEveryPresentVertexInTheBall) {
     const int32_t extent = GetParam();
     std::mt19937 rng(uint32_t(extent) + 2);
