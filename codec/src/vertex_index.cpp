@@ -122,8 +122,8 @@ VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
         }
         std::vector<uint32_t>().swap(columnTable_);
     }
-    // At most 4 entries a vertex (16 bytes; igea: 64 cells a side, 262,144
-    // entries for 134,345 vertices, 1 MB).
+    // At most 4 entries a vertex (16 bytes; igea: 216,000 cells for
+    // 134,345 vertices).
     if (perAxis <= (uint64_t(1) << 16) && perAxis * perAxis * perAxis <= 4 * uint64_t(n) + 4096) {
         denseCells_.assign(size_t(perAxis * perAxis * perAxis), kNoCell);
         for (size_t column = 0; column < columnKeys_.size(); ++column) {
