@@ -122,17 +122,6 @@ VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
         }
         std::vector<uint32_t>().swap(columnTable_);
     }
-    // At most 4 entries a vertex (16 bytes; igea: 216,000 cells for
-    // 134,345 vertices).
-    if (perAxis <= (uint64_t(1) << 16) && perAxis * perAxis * perAxis <= 4 * uint64_t(n) + 4096) {
-        denseCells_.assign(size_t(perAxis * perAxis * perAxis), kNoCell);
-        for (size_t column = 0; column < columnKeys_.size(); ++column) {
-            const uint64_t key = columnKeys_[column];
-            const uint64_t first = ((key >> 32) * perAxis + (key & 0xFFFFFFFFu)) * perAxis;
-            for (uint32_t c = columnCells_[column]; c < columnCells_[column + 1]; ++c)
-                denseCells_[size_t(first + uint64_t(cellZ_[c]))] = c;
-        }
-    }
     slotOf_.resize(n);
     cellOfVertex_.resize(n);
     cellBoxes_.resize(6 * cellStart_.size());

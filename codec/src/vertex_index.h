@@ -104,45 +104,26 @@ private:
     template <class Visit>
     void forEachCellOfColumn(const FixedPoint& p, int64_t x, int64_t y, int64_t z0, int64_t z1, bool capsOnly,
                              int64_t bound2, Visit& visit) const {
-        if (x < 0 || y < 0 || x > lastCell_ || y > lastCell_) return;
-        const int64_t gx = gap(p.x, x), gy = gap(p.y, y), xy2 = gx * gx + gy * gy;
-        if (xy2 > bound2) return;
-        if (!denseCells_.empty()) {
-            const uint32_t* column = denseCells_.data() + size_t((x * (lastCell_ + 1) + y) * (lastCell_ + 1));
-            auto at = [&](int64_t z) {
-                if (z >= 0 && z <= lastCell_ && column[z] != kNoCell) visitCell(p, column[z], z, xy2, bound2, visit);
-            };
-            if (capsOnly) {
-                at(z0);
-                if (z1 != z0) at(z1);
-                return;
-            }
-            for (int64_t z = std::max<int64_t>(z0, 0), last = std::min(z1, lastCell_); z <= last; ++z)
-                if (column[z] != kNoCell) visitCell(p, column[z], z, xy2, bound2, visit);
-            return;
-        }
         const uint32_t column = findColumn(x, y);
         if (column == kNoColumn) return;
+        const int64_t gx = gap(p.x, x), gy = gap(p.y, y), xy2 = gx * gx + gy * gy;
+        if (xy2 > bound2) return;
         for (uint32_t c = columnCells_[column], end = columnCells_[column + 1]; c < end; ++c) {
             const int64_t z = cellZ_[c];
             if (z > z1) break;
-            if (z < z0 || (capsOnly && z != z0 && z != z1)) continue;
-            visitCell(p, c, z, xy2, bound2, visit);
+            if (z < z0 || (capsOnly && z != z0 && z != z1) || cellPresent_[c] == 0) continue;
+            // The cell's own box first (cheap), then the box of the
+            // vertices it was built with: a surface fills a thin slice of
+            // a cell, so this one passes a third fewer cells around a ball.
+            const int64_t gz = gap(p.z, z);
+            if (xy2 + gz * gz > bound2) continue;
+            const int32_t* box = cellBoxes_.data() + 6 * size_t(c);
+            const int64_t bx = boxGap(p.x, box[0], box[3]), by = boxGap(p.y, box[1], box[4]),
+                          bz = boxGap(p.z, box[2], box[5]);
+            if (bx * bx + by * by + bz * bz <= bound2)
+                visit(slots_.data() + cellStart_[c], slotPoints_.data() + 3 * size_t(cellStart_[c]),
+                      size_t(cellPresent_[c]));
         }
-    }
-    // Calls visit for cell c at height z of a column xy2 away from p, if it
-    // has present vertices and both its box and the box of the vertices it
-    // was built with lie within bound2. A surface fills a thin slice of a
-    // cell, so the second test passes a third fewer cells around a ball.
-    template <class Visit>
-    void visitCell(const FixedPoint& p, uint32_t c, int64_t z, int64_t xy2, int64_t bound2, Visit& visit) const {
-        if (cellPresent_[c] == 0) return;
-        const int64_t gz = gap(p.z, z);
-        if (xy2 + gz * gz > bound2) return;
-        const int32_t* box = cellBoxes_.data() + 6 * size_t(c);
-        const int64_t bx = boxGap(p.x, box[0], box[3]), by = boxGap(p.y, box[1], box[4]), bz = boxGap(p.z, box[2], box[5]);
-        if (bx * bx + by * by + bz * bz <= bound2)
-            visit(slots_.data() + cellStart_[c], slotPoints_.data() + 3 * size_t(cellStart_[c]), size_t(cellPresent_[c]));
     }
 
     int shift_ = 0;         // a cell is 2^shift grid units wide
@@ -165,14 +146,6 @@ private:
     size_t findColumnSlot(uint64_t key) const;
     std::vector<uint32_t> columnTable_;
     std::vector<uint32_t> denseColumns_;  // column of (x, y) at x * (lastCell_ + 1) + y, when the box allows
-    // Where the box in cells is small against the vertex count, every cell
-    // of it: the cell (x, y, z) at (x * (lastCell_ + 1) + y) * (lastCell_ +
-    // 1) + z, kNoCell if empty. A search then reads the cells it visits
-    // directly, instead of each column's list from its start (columns
-    // across a surface hold cells far from most searches: igea's searches
-    // stepped through 4 cells for every one in range).
-    static constexpr uint32_t kNoCell = kNoIndex;
-    std::vector<uint32_t> denseCells_;
     int columnBits_ = 0;
     std::vector<uint64_t> columnKeys_;
     std::vector<uint32_t> columnCells_;
