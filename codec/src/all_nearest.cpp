@@ -217,12 +217,13 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
                     const int64_t d2 = ex * ex + ey * ey + ez * ez;
                     if (d2 > bound) continue;
                     const uint64_t key = uint64_t(d2) << 32 | *qId;
-                    size_t at = kept;
+                    // Signed, so that best[at - 1] may be the sentinel.
+                    ptrdiff_t at = ptrdiff_t(kept);
                     if (kept <= k) {
                         ++kept;
                     } else {
                         if (key >= best[k]) continue;
-                        at = k;
+                        at = ptrdiff_t(k);
                     }
                     for (; best[at - 1] > key; --at) best[at] = best[at - 1];
                     best[at] = key;
