@@ -77,13 +77,6 @@ RangeDecoder::RangeDecoder(const uint8_t* data, size_t size) : data_(data), size
     for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | nextByte();
 }
 
-void RangeDecoder::normalize() {
-    while (range_ < kTop) {
-        range_ <<= 8;
-        code_ = (code_ << 8) | nextByte();
-    }
-}
-
 uint32_t RangeDecoder::decodeFreq(uint32_t totalFreq) {
     assert(totalFreq > 0 && totalFreq <= kRangeCoderMaxTotal);
     const uint32_t slot = code_ / (range_ / totalFreq);

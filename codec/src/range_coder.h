@@ -115,10 +115,7 @@ public:
         } else {
             range_ = ofZero;
         }
-        while (range_ < kRangeCoderTop) {
-            range_ <<= 8;
-            code_ = (code_ << 8) | nextByte();
-        }
+        normalize();
         return bit;
     }
     // Inverse of RangeEncoder::encodeBits.
@@ -136,7 +133,12 @@ private:
         const size_t at = pos_++;
         return at < size_ ? data_[at] : 0;
     }
-    void normalize();
+    void normalize() {
+        while (range_ < kRangeCoderTop) {
+            range_ <<= 8;
+            code_ = (code_ << 8) | nextByte();
+        }
+    }
 
     const uint8_t* data_;
     size_t size_;
