@@ -10,6 +10,10 @@
 // reverse order with the same rounded terms, so every integer vector comes
 // back exactly whatever the rounding did. Everything is integer arithmetic
 // (the slopes are 16-bit fixed point), the same on every machine.
+//
+// A normal fixes the third axis only; the first two may also be turned
+// about it (alignFirstAxis) so that the first points along a direction the
+// coder knows, the way the surface was last walked (format 7).
 #ifndef DRM_LOCAL_FRAME_H
 #define DRM_LOCAL_FRAME_H
 
@@ -33,6 +37,7 @@ public:
         // 64, and the integer lengths below are exact to 2^-19 (a short
         // normal like (3, 7, 6) would turn several degrees off).
         if (nx == 0 && ny == 0 && nz == 0) return;
+        hasNormal_ = true;
         // The loops below halve or double one step at a time; most of the
         // way is taken first in one shift, which the loops then finish
         // exactly as before: fewer halvings than the largest component's
@@ -68,13 +73,43 @@ public:
         polar_ = PlaneRotation(nz, int64_t(integerSqrt(uint64_t(nx * nx + ny * ny))));
     }
 
+    // Turns the frame about its normal so that the part of `d` in the
+    // tangent plane lies along the first axis, pointing its way: d, brought
+    // to 20 bits (its largest component's bit length: shifted up, or
+    // floor-shifted down, as one), is turned into the frame, and a third
+    // plane rotation turns its first two components onto the first axis.
+    // Nothing changes in the identity frame (no normal), nor for a d along
+    // the normal or zero. Components of d must stay below 2^62.
+    void alignFirstAxis(int64_t dx, int64_t dy, int64_t dz) {
+        if (!hasNormal_) return;
+        const int length = bitLength(std::max(magnitude(dx), std::max(magnitude(dy), magnitude(dz))));
+        if (length == 0) return;
+        if (length > kNormalBits) {
+            const int k = length - kNormalBits;
+            dx = floorShift(dx, k);
+            dy = floorShift(dy, k);
+            dz = floorShift(dz, k);
+        } else if (length < kNormalBits) {
+            const int64_t scale = int64_t(1) << (kNormalBits - length);
+            dx *= scale;
+            dy *= scale;
+            dz *= scale;
+        }
+        int64_t v[3] = {dx, dy, dz};
+        azimuth_.forward(v[0], v[1]);
+        polar_.forward(v[2], v[0]);
+        tangent_ = PlaneRotation(v[0], v[1]);
+    }
+
     // World -> frame, and back. Vector components must stay below 2^40 in
     // magnitude (residuals of 21-bit coordinates are below 2^23).
     void toFrame(int64_t v[3]) const {
         azimuth_.forward(v[0], v[1]);
         polar_.forward(v[2], v[0]);
+        tangent_.forward(v[0], v[1]);
     }
     void fromFrame(int64_t v[3]) const {
+        tangent_.inverse(v[0], v[1]);
         polar_.inverse(v[2], v[0]);
         azimuth_.inverse(v[0], v[1]);
     }
@@ -142,6 +177,8 @@ private:
     };
 
     PlaneRotation azimuth_, polar_;
+    PlaneRotation tangent_;   // about the normal (alignFirstAxis); the identity until then
+    bool hasNormal_ = false;  // false: the identity frame
 };
 
 

@@ -44,16 +44,17 @@ struct AxisModels {
 };
 
 // A residual: zero or not, the bit length n >= 1 in unary, the sign (in
-// signContext), then the bits below the leading one (the first two
-// adaptive, per n).
-template <class Io>
-int32_t codeResidual(Io& io, AxisModels& m, int context, int signContext, int32_t r) {
+// the model signModel(n) gives: the sign may depend on the length, known
+// by then), then the bits below the leading one (the first two adaptive,
+// per n).
+template <class Io, class SignModel>
+int32_t codeResidual(Io& io, AxisModels& m, int context, SignModel signModel, int32_t r) {
     const uint32_t magnitude = magnitudeOf(r);
     if (io.bit(m.zero[context], magnitude == 0)) return 0;
     const int n = bitLength(magnitude);
     int length = 1;
     while (length < kMaxLength && io.bit(m.longer[context][length], n > length)) ++length;
-    const bool negative = io.bit(m.sign[signContext], r < 0) != 0;
+    const bool negative = io.bit(signModel(length), r < 0) != 0;
     uint32_t value = 1;
     for (int k = 0; k < std::min(length - 1, kAdaptiveLowBits); ++k)
         value = (value << 1) | uint32_t(io.bit(m.low[length][k], (magnitude >> (length - 2 - k)) & 1));

@@ -2,7 +2,7 @@
 # Rewrites the golden .drm files and the meshes they must decode to. Run this
 # only for an intended format change, and say so in the commit: the golden
 # test exists so that no change of the bitstream passes unnoticed.
-# The files of older format versions (v1/ to v5/) are frozen, never rewritten: the
+# The files of older format versions (v1/ to v6/) are frozen, never rewritten: the
 # golden test checks that the decoder still reads them.
 # Usage: tests/golden/regenerate.sh [path/to/drm]
 set -euo pipefail
@@ -21,4 +21,5 @@ encode blobby-3cc blobby-3cc.ply --keep-vertex-order    # 3 components with hole
 encode star-raw star-cgal.ply --geometry raw --bits 8 --predictor parallelogram
 encode nefertiti-refine nefertiti.ply --geometry refine  # refine's coarse tree and low bits
 encode tray-bottom tray-bottom.ply                       # CAD STL slivers: the front order (format 5) ranks many edges
+encode bunny-lres bunny-lres.ply                         # a scan: edges from the parent in the frame along the walk, their tangent signs (format 7)
 ls -l "$here"/*.drm

@@ -5,8 +5,9 @@
 // folder of their own (v1/: written before the vertex coder's format 2;
 // v2/: before format 3's local frame; v3/: before format 4's nearest
 // candidates from the predictor's ball; v4/: before format 5's front
-// neighbours; v5/: before format 6's sign contexts), so the decoder keeps
-// reading what users already have.
+// neighbours; v5/: before format 6's sign contexts; v6/: before format 7's
+// frame along the walk and tangent signs), so the decoder keeps reading what
+// users already have.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -37,6 +38,9 @@ TEST(Golden, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw"); }
 TEST(Golden, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine"); }
 // CAD slivers: the front order ranks a good part of the edges.
 TEST(Golden, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom"); }
+// A scan: most edges from the parent are coded in the local frame, turned
+// along the walk, with their tangent signs in format 7's contexts.
+TEST(Golden, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres"); }
 
 TEST(GoldenFormat1, Torus) { expectDecodesToGolden("torus", "/v1", 1); }
 TEST(GoldenFormat1, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v1", 1); }
@@ -76,6 +80,16 @@ TEST(GoldenFormat5, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", 
 TEST(GoldenFormat5, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v5", 5); }
 TEST(GoldenFormat5, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v5", 5); }
 
+// Format 6's files, as its last encoder (79422de) wrote them: the frame
+// not turned about its normal, every sign in format 6's nine contexts.
+TEST(GoldenFormat6, Torus) { expectDecodesToGolden("torus", "/v6", 6); }
+TEST(GoldenFormat6, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v6", 6); }
+TEST(GoldenFormat6, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v6", 6); }
+TEST(GoldenFormat6, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v6", 6); }
+TEST(GoldenFormat6, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v6", 6); }
+TEST(GoldenFormat6, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v6", 6); }
+TEST(GoldenFormat6, ScanBunnyLres) { expectDecodesToGolden("bunny-lres", "/v6", 6); }
+
 // Header flag bit 8 (front neighbours) exists from format 5 on: a format 4
 // file that sets it, behind a fresh checksum, is refused, not decoded
 // with a lever its version never had.
@@ -96,7 +110,7 @@ TEST(GoldenFormat4, FrontNeighbourFlagIsRefused) {
     }
     // The same file as written, and format 5's and today's with the flag, decode.
     EXPECT_NO_THROW(drm::decode(file));
-    for (const char* folder : {"/v5", ""}) {
+    for (const char* folder : {"/v5", "/v6", ""}) {
         const std::vector<uint8_t> later =
             drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + folder + "/blobby-3cc.drm");
         ASSERT_TRUE(drm_test::parseSections(later, &sections));

@@ -121,9 +121,10 @@ TEST(GeometryTree, ASpanningTreeFarBehindIsGivenUp) {
 // The section's syntax follows the file's format version: a section read
 // as an earlier version (version 1: one symbol for the predictor choice;
 // version 2: no local frame for the residual from the parent; versions 3 to
-// 5: one sign model per axis) does not give back the points, so the decoder
-// must be told which it reads. (That older sections still decode is the
-// golden files' test, tests/golden/v1 to v5.)
+// 5: one sign model per axis; version 6: the frame not turned along the
+// walk, no tangent sign contexts) does not give back the points, so the
+// decoder must be told which it reads. (That older sections still decode is
+// the golden files' test, tests/golden/v1 to v6.)
 TEST(GeometryTree, ReadsASectionInItsFormatVersionsSyntax) {
     for (const char* name : {"fandisk.ply", "bunny-lres.ply"}) {
         SCOPED_TRACE(name);
@@ -136,10 +137,15 @@ TEST(GeometryTree, ReadsASectionInItsFormatVersionsSyntax) {
         for (size_t d = 0; d < n; ++d)
             for (int k = 0; k < 3; ++k) expected[3 * d + k] = grid[3 * size_t(encoded.order[d]) + k];
         EXPECT_EQ(asWritten, expected);
-        // Format 6 changed the sign models (formats 4 and 5 the connectivity
-        // section only): every older version misreads the section.
-        constexpr int kLastGeometryChange = 6;
+        // Format 7 changed the frame and the tangent signs, format 6 the sign
+        // models (formats 4 and 5 the connectivity section only): every
+        // older version misreads the section, but for one thing: a section
+        // that never uses the frame (bit G = 0) reads the same in format 6.
+        // Both meshes use it (a scan, and fandisk's curved patches).
+        constexpr int kLastGeometryChange = 7;
         static_assert(kLastGeometryChange == kFileFormatVersion, "a geometry reader per version: say which read alike");
+        const bool framed = encoded.framedResiduals > 0;
+        EXPECT_TRUE(framed);
         for (int older = 1; older < kLastGeometryChange; ++older) {
             bool misread = false;
             try {
@@ -147,7 +153,7 @@ TEST(GeometryTree, ReadsASectionInItsFormatVersionsSyntax) {
             } catch (const Error& e) {
                 misread = e.kind() == ErrorKind::Corrupt;
             }
-            EXPECT_TRUE(misread) << "read as version " << older;
+            EXPECT_EQ(misread, older < 6 || framed) << "read as version " << older;
         }
     }
 }
@@ -188,7 +194,7 @@ TEST(GeometryTree, TheLocalFrameCodesSomeResidualsFromTheParent) {
         const std::vector<int32_t> grid = gridOf(name, 12);
         const GeometryEncoding encoded =
             encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::On);
-        EXPECT_GT(encoded.framedResiduals, grid.size() / 3 / 50);  // bunny-lres: over 1 in 20; elephant: 68 of 2798
+        EXPECT_GT(encoded.framedResiduals, grid.size() / 3 / 100);  // bunny-lres: over 1 in 20; elephant: 51 of 2798
         EXPECT_LT(encoded.framedResiduals, grid.size() / 3);
         expectRoundTrip(grid, 12);
         // Without it (the section's bit G = 0): none, and the encoder keeps
@@ -236,11 +242,11 @@ TEST(GeometryTree, ManyCoincidentPointsCodeDensely) {
 }
 
 // The default geometry (auto) against the tree alone, on real meshes: never
-// larger; refine where it pays at least 3 % (genus3: the tree at 11.56 bits
-// per vertex in all, refine 10.97, 5 % smaller; mech-holes-shark's refine,
-// 2.6 % smaller since format 6, is not kept), the tree where refine is
-// not even tried (fandisk: 10.3 bits per vertex, under the 11 that make it
-// worth trying), and every file decodes to the same quantized mesh.
+// larger; refine where it pays at least 3 % (at format 7, genus3: the tree
+// at 11.56 bits per vertex in all, refine 11.11, 3.9 % smaller;
+// mech-holes-shark: 13.89 and 13.33, 4.0 % smaller), the tree where refine
+// is not even tried (fandisk: 10.2 bits per vertex, under the 11 that make
+// it worth trying), and every file decodes to the same quantized mesh.
 TEST(GeometryTree, AutoKeepsRefineOnlyWhereItPays) {
     for (const char* name : {"mech-holes-shark.ply", "genus3.ply", "nefertiti.ply", "fandisk.ply", "torus.ply", "elephant-with-holes.ply"}) {
         SCOPED_TRACE(name);
@@ -260,9 +266,10 @@ TEST(GeometryTree, AutoKeepsRefineOnlyWhereItPays) {
         EXPECT_EQ(a.stats.geometry, byDefault.stats.geometry);
     }
     const Mesh shark = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/mech-holes-shark.ply");
-    EXPECT_EQ(encode(shark).stats.geometry, GeometryCoder::SpanningTree);
+    EXPECT_EQ(encode(shark).stats.geometry, GeometryCoder::Refine);
     // genus3's tree costs 11.27 bits per vertex: over the 11 above which
-    // auto tries refine, which saves 5 % on it.
+    // auto tries refine, which saves 3.9 % on it (its estimate, one coarse
+    // tree, is 1.4 % over the attempt: kRefineEstimateSlack lets it be made).
     const Mesh genus3 = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/genus3.ply");
     EXPECT_EQ(encode(genus3).stats.geometry, GeometryCoder::Refine);
     const Mesh fandisk = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/fandisk.ply");

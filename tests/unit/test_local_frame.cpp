@@ -101,6 +101,60 @@ TEST(LocalFrame, AxisNormalsAndNoNormalLeaveTheGridAlone) {
     EXPECT_EQ(w[2], 7);
 }
 
+// Format 7 turns the frame about its normal: the tangent part of the
+// direction it is given then lies along the positive first axis, the normal
+// stays the third axis, and every vector still comes back exactly.
+TEST(LocalFrame, TurnsAboutTheNormalOntoAGivenDirection) {
+    std::mt19937_64 random(11);
+    std::uniform_int_distribution<int64_t> coordinate(-(int64_t(1) << 30), int64_t(1) << 30);
+    std::uniform_int_distribution<int64_t> small(-40, 40);
+    std::uniform_int_distribution<int64_t> residual(-(int64_t(1) << 22), int64_t(1) << 22);
+    for (int f = 0; f < 500; ++f) {
+        const bool tiny = f % 2 == 1;  // short directions are scaled up to 20 bits first
+        const auto pick = [&] { return tiny ? small(random) : coordinate(random); };
+        const double n[3] = {double(pick()), double(pick()), double(pick())};
+        const double d[3] = {double(pick()), double(pick()), double(pick())};
+        LocalFrame frame{int64_t(n[0]), int64_t(n[1]), int64_t(n[2])};
+        frame.alignFirstAxis(int64_t(d[0]), int64_t(d[1]), int64_t(d[2]));
+        for (int k = 0; k < 20; ++k) expectExactRoundTrip(frame, residual(random), residual(random), residual(random));
+        for (int k = 0; k < 10; ++k) expectExactRoundTrip(frame, residual(random), residual(random), residual(random), true);
+        // d's part in the tangent plane, at 2^20, turned: along +x.
+        const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        if (nn == 0) continue;
+        const double along = (d[0] * n[0] + d[1] * n[1] + d[2] * n[2]) / nn;
+        const double t[3] = {d[0] - along * n[0], d[1] - along * n[1], d[2] - along * n[2]};
+        const double length = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        const double dLength = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (length < 0.05 * dLength) continue;  // nearly along the normal: any turn will do
+        int64_t v[3];
+        for (int a = 0; a < 3; ++a) v[a] = int64_t(std::llround(t[a] * double(1 << 20) / length));
+        frame.toFrame(v);
+        SCOPED_TRACE(f);
+        // The normal's and the direction's 20-bit roundings tilt the frame
+        // by up to about 2^-17 radians, a few units at this length.
+        EXPECT_NEAR(double(v[0]), double(1 << 20), 64.0);
+        EXPECT_LE(std::abs(v[1]), 96 + (tiny ? (1 << 20) / 8 : 0));  // small integer directions are coarse
+        EXPECT_LE(std::abs(v[2]), 96 + (tiny ? (1 << 20) / 8 : 0));
+    }
+    // No normal: the identity, whatever the direction.
+    LocalFrame none;
+    none.alignFirstAxis(3, -5, 7);
+    int64_t v[3] = {17, 0, -3};
+    none.toFrame(v);
+    EXPECT_EQ(v[0], 17);
+    EXPECT_EQ(v[1], 0);
+    EXPECT_EQ(v[2], -3);
+    // A normal up the third axis and a direction along -y: a half turn
+    // and a quarter turn about z, exact: -y onto +x.
+    LocalFrame up(0, 0, 5);
+    up.alignFirstAxis(0, -9, 4);
+    int64_t w[3] = {0, -6, 2};
+    up.toFrame(w);
+    EXPECT_EQ(w[0], 6);
+    EXPECT_EQ(w[1], 0);
+    EXPECT_EQ(w[2], 2);
+}
+
 TEST(LocalFrame, IntegerSquareRootIsExact) {
     for (uint64_t r : {uint64_t(0), uint64_t(1), uint64_t(2), uint64_t(3037000499), uint64_t(1) << 31}) {
         EXPECT_EQ(integerSqrt(r * r), r);
