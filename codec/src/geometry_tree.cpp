@@ -59,12 +59,6 @@ struct Predictions {
     // Format 3 codes the residual from the parent (candidate 0) in this
     // frame: the surface's normal at the parent as its third axis.
     LocalFrame frame;
-    // Format 7: where the near points lie in the frame's tangent plane, for
-    // the signs of that residual (tangentSignModel): how many have a
-    // positive and a negative first coordinate, and how many lie in each
-    // quadrant [first < 0][second < 0] (points on an axis in none).
-    uint8_t side[2] = {0, 0};
-    uint8_t quadrant[2][2] = {{0, 0}, {0, 0}};
     // Each candidate's flag context (flagContextOf), once known: the
     // encoder asks for it again when it codes the flag it priced.
     mutable int8_t flagContext[kMaxCandidates];
@@ -325,24 +319,35 @@ LocalFrame surfaceFrame(GridPoint at, const GridPoint* near, int m) {
 // Format 7 turns the frame about its normal so that its first axis points
 // the way the tree last went, from the parent's parent to the parent (a
 // depth-first walk tends to go on straight: the first tangent component of
-// the next edge is then mostly positive), and notes in which half and
-// quadrant of the tangent plane each near point lies. A new vertex seldom
-// lies where decoded points already are, so those counts tell its signs
-// (venus-lres and max-planck-5k -2 % whole file, feline -1 %).
-void alongTheWalk(const CodingState& s, uint32_t parent, const GridPoint* near, int m, Predictions& p) {
-    const GridPoint at = s.pos[parent];
+// the next edge is then mostly positive).
+void turnAlongTheWalk(const CodingState& s, uint32_t parent, LocalFrame& frame) {
     const uint32_t grandparent = s.parentOf[parent];
-    if (grandparent != kNoVertex) {
-        const GridPoint from = s.pos[grandparent];
-        p.frame.alignFirstAxis(int64_t(at.x) - from.x, int64_t(at.y) - from.y, int64_t(at.z) - from.z);
-    }
-    for (int i = 0; i < m; ++i) {
-        int64_t q[3] = {int64_t(near[i].x) - at.x, int64_t(near[i].y) - at.y, int64_t(near[i].z) - at.z};
+    if (grandparent == kNoVertex) return;
+    const GridPoint at = s.pos[parent], from = s.pos[grandparent];
+    frame.alignFirstAxis(int64_t(at.x) - from.x, int64_t(at.y) - from.y, int64_t(at.z) - from.z);
+}
+
+// Format 7: where the near points lie in the frame's tangent plane: how
+// many have a positive and a negative first coordinate, and how many lie in
+// each quadrant [first < 0][second < 0] (points on an axis in none). A new
+// vertex seldom lies where decoded points already are, so these tell the
+// signs of a residual coded in the frame (venus-lres and max-planck-5k
+// -2 % whole file, feline -1 %). Worked out only for such a residual.
+struct NearPointSides {
+    uint8_t side[2] = {0, 0};
+    uint8_t quadrant[2][2] = {{0, 0}, {0, 0}};
+};
+NearPointSides nearPointSides(const Predictions& p) {
+    NearPointSides sides;
+    for (int i = 1; i <= kNearest; ++i) {  // known[0] is the parent; missing near points repeat it
+        int64_t q[3] = {p.known[i].x - p.known[0].x, p.known[i].y - p.known[0].y, p.known[i].z - p.known[0].z};
+        if (q[0] == 0 && q[1] == 0 && q[2] == 0) continue;
         p.frame.toFrame(q);
         if (q[0] == 0) continue;
-        ++p.side[q[0] < 0];
-        if (q[1] != 0) ++p.quadrant[q[0] < 0][q[1] < 0];
+        ++sides.side[q[0] < 0];
+        if (q[1] != 0) ++sides.quadrant[q[0] < 0][q[1] < 0];
     }
+    return sides;
 }
 
 // Format 7: the sign model of tangent component `axis` (0 or 1) of a
@@ -355,17 +360,18 @@ void alongTheWalk(const CodingState& s, uint32_t parent, const GridPoint* near, 
 // - the second: by the near points in the two quadrants on the first
 //   component's side (none counted when the first is zero), and by its
 //   length against the first's.
-BitModel& tangentSignModel(CodingState& s, const Predictions& p, int axis, int length, int32_t first) {
+BitModel& tangentSignModel(CodingState& s, const Predictions& p, const NearPointSides& sides, int axis, int length,
+                           int32_t first) {
     const auto clamped = [](uint8_t count) { return std::min<int>(count, 2); };
     int where = 0, howLong = 0;
     if (axis == 0) {
-        where = 3 * clamped(p.side[0]) + clamped(p.side[1]);
+        where = 3 * clamped(sides.side[0]) + clamped(sides.side[1]);
         const int spacing = bitLength(uint64_t(p.spacing2));
         howLong = 2 * length >= spacing + 1 ? 2 : 2 * length >= spacing - 3 ? 1 : 0;
     } else {
         if (first != 0) {
             const int negative = first < 0 ? 1 : 0;
-            where = 3 * clamped(p.quadrant[negative][0]) + clamped(p.quadrant[negative][1]);
+            where = 3 * clamped(sides.quadrant[negative][0]) + clamped(sides.quadrant[negative][1]);
         }
         const int ofFirst = bitLength(magnitudeOf(first));
         howLong = length > ofFirst ? 2 : length == ofFirst ? 1 : 0;
@@ -388,17 +394,18 @@ Predictions predict(const CodingState& s, uint32_t self, uint32_t parent) {
             if (i != j) p.add(at + (near[i] - near[j]));
     p.pad();
     if (s.choiceFlags || s.spacingContexts) p.spacing2 = m > 0 ? nearD2[m - 1] : 0;
-    if (s.choiceFlags) {  // the flags' contexts
-        p.nearest2 = m > 0 ? nearD2[0] : 0;
+    if (s.choiceFlags || s.tangentSigns)
         for (int i = 0; i <= kNearest; ++i) {
             const GridPoint k = i > 0 && i <= m ? near[i - 1] : at;
             p.known[i] = {k.x, k.y, k.z};
         }
+    if (s.choiceFlags) {  // the flags' contexts
+        p.nearest2 = m > 0 ? nearD2[0] : 0;
         p.crowdRadius = int32_t(integerSqrt(uint64_t(p.spacing2)) / 5);
     }
     if (s.framedParent) {
         p.frame = surfaceFrame(at, near, m);
-        if (s.tangentSigns) alongTheWalk(s, parent, near, m, p);
+        if (s.tangentSigns) turnAlongTheWalk(s, parent, p.frame);
     }
     return p;
 }
@@ -661,9 +668,10 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     int64_t out[3];
     const int32_t in[3] = {r.x, r.y, r.z};
     const int group = residualGroup(s.version2, choice);
+    const NearPointSides sides = inFrame && s.tangentSigns ? nearPointSides(p) : NearPointSides();
     for (int a = 0; a < 3; ++a) {
         const auto signModel = [&](int length) -> BitModel& {
-            if (inFrame && a < 2 && s.tangentSigns) return tangentSignModel(s, p, a, length, a == 0 ? 0 : int32_t(out[0]));
+            if (inFrame && a < 2 && s.tangentSigns) return tangentSignModel(s, p, sides, a, length, a == 0 ? 0 : int32_t(out[0]));
             return s.axis[group][a].sign[signContext(s, self, parent, a)];
         };
         const int32_t coded = codeResidual(io, s.axis[group][a], contexts[group][a], signModel, in[a]);
