@@ -870,11 +870,14 @@ constexpr size_t kSteps = 16;
 constexpr double kAbandonOverRival = 1.015;
 constexpr size_t kAbandonFromStep = 4;
 constexpr size_t kAbandonFromVertices = 16384;
-// Before that, from 2/16 on, a tree more than 3 % behind is given up: the
-// clear losers are (igea 1.038 at 2/16, horse 1.042, venus 1.053, feline
-// 1.075, bunny 1.032), the winners are not (crank 1.018, octopus at most
-// 1.026, falconstatue 0.997; every trial at 12 bits, docs/speed.md).
-constexpr double kAbandonEarlyOverRival = 1.03;
+// Before that, from 2/16 on, a tree more than 1.8 % behind is given up:
+// the clear losers are (format 7 at 12 bits, the first trial: igea 1.023
+// at 2/16, bunny 1.029, nefertiti-50k 1.033, venus 1.045, horse 1.056,
+// feline 1.062), the winners are not (crank 1.011, octopus 1.008,
+// falconstatue 1.012); every corpus file is the same as with format 6's
+// 3 % (igea was 1.038 then; at 3 %, format 7 would code igea's rival to
+// 4/16: 2.7 % more instructions to encode it).
+constexpr double kAbandonEarlyOverRival = 1.018;
 constexpr size_t kAbandonEarlyFromStep = 2;
 
 // The section of any tree: each vertex in preorder (a root raw, any other
