@@ -668,10 +668,12 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     int64_t out[3];
     const int32_t in[3] = {r.x, r.y, r.z};
     const int group = residualGroup(s.version2, choice);
-    const NearPointSides sides = inFrame && s.tangentSigns ? nearPointSides(p) : NearPointSides();
+    const bool tangentContexts = inFrame && s.tangentSigns;  // format 7
+    const NearPointSides sides = tangentContexts ? nearPointSides(p) : NearPointSides();
     for (int a = 0; a < 3; ++a) {
         const auto signModel = [&](int length) -> BitModel& {
-            if (inFrame && a < 2 && s.tangentSigns) return tangentSignModel(s, p, sides, a, length, a == 0 ? 0 : int32_t(out[0]));
+            if (tangentContexts && a < 2)
+                return tangentSignModel(s, p, sides, a, length, a == 0 ? 0 : int32_t(out[0]));
             return s.axis[group][a].sign[signContext(s, self, parent, a)];
         };
         const int32_t coded = codeResidual(io, s.axis[group][a], contexts[group][a], signModel, in[a]);
@@ -861,7 +863,8 @@ std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const st
 // same vertices. Compared vertex for vertex the two settle early: on the
 // corpus at 12 bits the large meshes where the spanning tree wins (crank,
 // octopus) stay under 1.00 from 4/16 on, those where it loses run over
-// 1.015 all the way (igea 1.03, bunny 1.02, horse 1.05); a comparison of
+// 1.015 all the way (format 6: igea 1.03, bunny 1.02, horse 1.05; format
+// 7: igea and bunny 1.023 to 1.029 from 2/16 to 4/16); a comparison of
 // the sections' sizes at the same fraction of the way would compare
 // different vertices and could not tell igea from crank. Small meshes are
 // left out: they cost little either way, and there the spanning tree can

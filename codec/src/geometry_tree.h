@@ -67,7 +67,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     GeometryTreeTrials* trials = nullptr);
 
 // Reads a section in the syntax of format version formatVersion (1 to
-// kFileFormatVersion; the section changed in versions 2, 3 and 6:
+// kFileFormatVersion; the section changed in versions 2, 3, 6 and 7:
 // docs/format.md; the encoder writes kFileFormatVersion's). Throws Error on data that does
 // not decode to exactly vertexCount vertices on the grid.
 std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits,

@@ -74,10 +74,11 @@ public:
     }
 
     // Turns the frame about its normal so that the part of `d` in the
-    // tangent plane lies along the first axis, pointing its way: d, brought
-    // to 20 bits (its largest component's bit length: shifted up, or
-    // floor-shifted down, as one), is turned into the frame, and a third
-    // plane rotation turns its first two components onto the first axis.
+    // tangent plane lies along the first axis, pointing its way: d, scaled
+    // so that its largest component's bit length is 20 (shifted up, or
+    // floor-shifted down, all components alike: a negative one may then
+    // reach -2^20), is turned into the frame, and a third plane rotation
+    // turns its first two components onto the first axis.
     // Nothing changes in the identity frame (no normal), nor for a d along
     // the normal or zero. Components of d must stay below 2^62.
     void alignFirstAxis(int64_t dx, int64_t dy, int64_t dz) {

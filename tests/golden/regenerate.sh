@@ -22,4 +22,5 @@ encode star-raw star-cgal.ply --geometry raw --bits 8 --predictor parallelogram
 encode nefertiti-refine nefertiti.ply --geometry refine  # refine's coarse tree and low bits
 encode tray-bottom tray-bottom.ply                       # CAD STL slivers: the front order (format 5) ranks many edges
 encode bunny-lres bunny-lres.ply                         # a scan: edges from the parent in the frame along the walk, their tangent signs (format 7)
+encode shark-refine mech-holes-shark.ply --geometry refine --refine-bits 2  # refine's coarse tree with format 7's frame
 ls -l "$here"/*.drm

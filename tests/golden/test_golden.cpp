@@ -41,6 +41,8 @@ TEST(Golden, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom")
 // A scan: most edges from the parent are coded in the local frame, turned
 // along the walk, with their tangent signs in format 7's contexts.
 TEST(Golden, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres"); }
+// Refine's coarse tree, coded with format 7's frame and signs, then two low bits.
+TEST(Golden, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine"); }
 
 TEST(GoldenFormat1, Torus) { expectDecodesToGolden("torus", "/v1", 1); }
 TEST(GoldenFormat1, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v1", 1); }

@@ -155,6 +155,14 @@ TEST(GeometryTree, ReadsASectionInItsFormatVersionsSyntax) {
             }
             EXPECT_EQ(misread, older < 6 || framed) << "read as version " << older;
         }
+        // Without the frame (bit G = 0) format 7 codes as format 6 did.
+        const GeometryEncoding unframed =
+            encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::Off);
+        std::vector<int32_t> unframedExpected(grid.size());
+        for (size_t d = 0; d < n; ++d)
+            for (int k = 0; k < 3; ++k) unframedExpected[3 * d + k] = grid[3 * size_t(unframed.order[d]) + k];
+        EXPECT_EQ(decodeGeometryTree(unframed.bytes.data(), unframed.bytes.size(), n, 12, 6), unframedExpected);
+        EXPECT_EQ(decodeGeometryTree(unframed.bytes.data(), unframed.bytes.size(), n, 12, 7), unframedExpected);
     }
 }
 
