@@ -44,18 +44,7 @@ public:
         // excess bit length never bring it below the limit (floor(v / 2^k)
         // is k halvings), and doubling the largest component 20 - its bit
         // length times brings it to 2^19 or over, one less not.
-        const int length = bitLength(std::max(magnitude(nx), std::max(magnitude(ny), magnitude(nz))));
-        if (length > kNormalBits) {
-            const int k = length - kNormalBits;
-            nx = floorShift(nx, k);
-            ny = floorShift(ny, k);
-            nz = floorShift(nz, k);
-        } else if (length < kNormalBits) {
-            const int64_t scale = int64_t(1) << (kNormalBits - length);
-            nx *= scale;
-            ny *= scale;
-            nz *= scale;
-        }
+        shiftToNormalBits(nx, ny, nz);
         while (magnitude(nx) >= kNormalLimit || magnitude(ny) >= kNormalLimit || magnitude(nz) >= kNormalLimit) {
             nx = halve(nx);
             ny = halve(ny);
@@ -82,20 +71,8 @@ public:
     // Nothing changes in the identity frame (no normal), nor for a d along
     // the normal or zero. Components of d must stay below 2^62.
     void alignFirstAxis(int64_t dx, int64_t dy, int64_t dz) {
-        if (!hasNormal_) return;
-        const int length = bitLength(std::max(magnitude(dx), std::max(magnitude(dy), magnitude(dz))));
-        if (length == 0) return;
-        if (length > kNormalBits) {
-            const int k = length - kNormalBits;
-            dx = floorShift(dx, k);
-            dy = floorShift(dy, k);
-            dz = floorShift(dz, k);
-        } else if (length < kNormalBits) {
-            const int64_t scale = int64_t(1) << (kNormalBits - length);
-            dx *= scale;
-            dy *= scale;
-            dz *= scale;
-        }
+        if (!hasNormal_ || (dx == 0 && dy == 0 && dz == 0)) return;
+        shiftToNormalBits(dx, dy, dz);
         int64_t v[3] = {dx, dy, dz};
         azimuth_.forward(v[0], v[1]);
         polar_.forward(v[2], v[0]);
@@ -121,6 +98,24 @@ private:
     static constexpr int kFractionBits = 16;
     static uint64_t magnitude(int64_t v) { return v < 0 ? uint64_t(-v) : uint64_t(v); }
     static int64_t halve(int64_t v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }  // floor(v / 2)
+    // Shifts a non-zero vector, all components alike, so that its largest
+    // component's bit length is kNormalBits: multiplied by a power of two,
+    // or floor-divided by one (a negative component may then reach
+    // -2^kNormalBits).
+    static void shiftToNormalBits(int64_t& x, int64_t& y, int64_t& z) {
+        const int length = bitLength(std::max(magnitude(x), std::max(magnitude(y), magnitude(z))));
+        if (length > kNormalBits) {
+            const int k = length - kNormalBits;
+            x = floorShift(x, k);
+            y = floorShift(y, k);
+            z = floorShift(z, k);
+        } else if (length < kNormalBits) {
+            const int64_t scale = int64_t(1) << (kNormalBits - length);
+            x *= scale;
+            y *= scale;
+            z *= scale;
+        }
+    }
     // floor(v / 2^k), for 0 <= k < 63 and |v| below 2^62.
     static int64_t floorShift(int64_t v, int k) {
         return v >= 0 ? v >> k : -((-v + (int64_t(1) << k) - 1) >> k);
