@@ -126,6 +126,7 @@ public:
         int64_t d2s[kNearest];
         uint32_t vs[kNearest];
         std::fill(d2s, d2s + kNearest, INT64_MAX);
+        std::fill(vs, vs + kNearest, kNoVertex);
         int64_t last = INT64_MAX;  // d2s[kNearest - 1], kept at hand
         int count = 0;
         const int64_t ax = at.x, ay = at.y, az = at.z;
@@ -143,13 +144,17 @@ public:
                 // `self` lies at `at` (0 away): tested only once a vertex
                 // would enter, which few do.
                 if (d2 < last && v != self) {
-                    int i = kNearest - 1;  // insertion into the sorted list
-                    for (; i > 0 && d2s[i - 1] > d2; --i) {
-                        d2s[i] = d2s[i - 1];
-                        vs[i] = vs[i - 1];
+                    // Insertion into the sorted list, after the entries as
+                    // near (seen first), without branches: where it lands is
+                    // a coin toss to a branch predictor.
+                    for (int i = kNearest - 1; i > 0; --i) {
+                        const bool shifted = d2s[i - 1] > d2, here = d2s[i] > d2;
+                        vs[i] = shifted ? vs[i - 1] : (here ? v : vs[i]);
+                        d2s[i] = shifted ? d2s[i - 1] : (here ? d2 : d2s[i]);
                     }
-                    d2s[i] = d2;
-                    vs[i] = v;
+                    const bool front = d2s[0] > d2;
+                    vs[0] = front ? v : vs[0];
+                    d2s[0] = front ? d2 : d2s[0];
                     count += count < kNearest ? 1 : 0;
                     last = d2s[kNearest - 1];
                 }

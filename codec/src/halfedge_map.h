@@ -22,14 +22,21 @@ public:
     static constexpr uint32_t kAbsent = kNoIndex;
 
     // expectedEdges: how many edges will be inserted (the table never grows
-    // past twice that without rehashing, so a good guess keeps it fast).
-    explicit HalfEdgeMap(size_t expectedEdges = 16) { reset(expectedEdges); }
+    // past slotsPerEdge times that without rehashing, so a good guess keeps
+    // it fast). slotsPerEdge: the table grows when its entries would fill
+    // more than 1 / slotsPerEdge of its slots. 2 suits a table of the whole
+    // mesh (memory); 4 a small one that is searched far more often than it
+    // is filled (shorter probe runs: a look-up's loop ends where a branch
+    // predictor expects more often).
+    explicit HalfEdgeMap(size_t expectedEdges = 16, size_t slotsPerEdge = 2) : slotsPerEdge_(slotsPerEdge) {
+        reset(expectedEdges);
+    }
 
     void reset(size_t expectedEdges) {
-        // Exactly twice the edges (not the next power of two, which would
-        // cost up to twice as much again: 43 bytes per vertex on a 1M-face
-        // mesh's input check).
-        setCapacity(std::max<size_t>(16, expectedEdges * 2));
+        // Exactly slotsPerEdge times the edges (not the next power of two,
+        // which would cost up to twice as much again: 43 bytes per vertex on
+        // a 1M-face mesh's input check).
+        setCapacity(std::max<size_t>(16, expectedEdges * slotsPerEdge_));
     }
 
     // The value stored for (a, b), or kAbsent.
@@ -46,7 +53,7 @@ public:
     // Inserts (a, b) -> value; returns false (and changes nothing) if the
     // edge is already present.
     bool insert(uint32_t a, uint32_t b, uint32_t value) {
-        if ((size_ + 1) * 2 > keys_.size()) grow();
+        if (full()) grow();
         const uint64_t key = pack(a, b);
         size_t slot = home(key);
         for (; keys_[slot] != kEmptyKey; slot = next(slot))
@@ -63,28 +70,36 @@ public:
     // True when the next insert would grow the table: a caller that knows
     // some entries will never be asked for again can drop them first
     // (rebuildKeeping) instead.
-    bool full() const { return (size_ + 1) * 2 > keys_.size(); }
+    bool full() const { return (size_ + 1) * slotsPerEdge_ > keys_.size(); }
 
     // Rebuilds the table with only the entries (a, b) for which keep(a, b)
-    // holds, at a capacity that leaves them at most an eighth of the slots
-    // (so the table is full again only after at least 3/8 of its slots
-    // have been inserted: sweeping costs O(1) per insert, amortized, and
+    // holds, at a capacity that leaves them at most a quarter of the most
+    // the table holds (so it is full again only after at least 3/4 of that
+    // has been inserted: sweeping costs O(1) per insert, amortized, and
     // little, as it reads each slot once). Linear probing needs no
     // tombstones this way; the dropped keys then answer kAbsent.
     template <class Keep>
     void rebuildKeeping(Keep keep) {
         std::vector<uint64_t> keptKeys;
         std::vector<uint32_t> keptValues;
-        keptKeys.reserve(size_);
-        keptValues.reserve(size_);
+        // Without a branch on what each slot holds (a coin toss): every
+        // entry is written and kept if it should be. keep() is asked of
+        // (0, 0) for an empty slot, so it must answer for any vertex below
+        // the largest it is asked of.
+        keptKeys.resize(size_ + 1);  // kept <= size_: room for the one written last
+        keptValues.resize(size_ + 1);
+        size_t kept = 0;
         for (size_t i = 0; i < keys_.size(); ++i) {
             const uint64_t key = keys_[i];
-            if (key != kEmptyKey && keep(uint32_t(key >> 32), uint32_t(key))) {
-                keptKeys.push_back(key);
-                keptValues.push_back(values_[i]);
-            }
+            const bool used = key != kEmptyKey;
+            const uint64_t asked = used ? key : 0;
+            keptKeys[kept] = key;
+            keptValues[kept] = values_[i];
+            kept += used & keep(uint32_t(asked >> 32), uint32_t(asked));
         }
-        const size_t capacity = std::max<size_t>(16, keptKeys.size() * 8);
+        keptKeys.resize(kept);
+        keptValues.resize(kept);
+        const size_t capacity = std::max<size_t>(16, keptKeys.size() * 4 * slotsPerEdge_);
         std::vector<uint64_t>().swap(keys_);  // freed before the new table is made
         std::vector<uint32_t>().swap(values_);
         setCapacity(capacity);
@@ -132,6 +147,7 @@ private:
 
     std::vector<uint64_t> keys_;
     std::vector<uint32_t> values_;
+    size_t slotsPerEdge_;
     size_t size_ = 0;
     size_t capacity_ = 0;  // keys_.size(), kept for the look-ups' arithmetic
 };

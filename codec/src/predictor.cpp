@@ -1,6 +1,7 @@
 #include "predictor.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "quantize.h"
@@ -93,35 +94,45 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     double radius = 2.0 * std::max(height, edgeLength);
     searchedBall_ = true;
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
-        inBall_.clear();
-        double firstHeight = 0;
-        uint32_t first = 0;
-        bool found = false;
-        // The test runs on the index's runs of vertices where they lie,
-        // nothing copied: the box around the ball holds a few dozen, and
+        // The box of cells around the ball holds a few dozen vertices, and
         // most of them lie outside the ball, behind the edge or beside the
-        // slab.
+        // slab; which, is as good as a coin toss to a branch predictor. So
+        // the ball is gathered first without a branch (every vertex is
+        // written to the list, and kept there if inside), from the index's
+        // runs where they lie; then the slab test, also without a branch,
+        // over the whole ball at once.
+        inBallCount_ = 0;
+        const double radius2 = radius * radius;
         candidates_.forEachNear(mid, radius, [&](const uint32_t* ids, const int32_t* at, size_t count) {
+            if (inBall_.size() < inBallCount_ + count) inBall_.resize(2 * (inBallCount_ + count));
+            BallVertex* out = inBall_.data() + inBallCount_;
+            size_t kept = 0;
             for (size_t i = 0; i < count; ++i, at += 3) {
                 const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - mid;
-                if (norm2(x) > radius * radius) continue;
-                const uint32_t v = ids[i];
-                inBall_.push_back({v, at});
-                const double h = dot(x, ahead);
-                if (h <= 0) continue;
-                const double along = dot(x, e) / edgeLength;
-                if (along > halfSlab || along < -halfSlab) continue;
-                // The geometric tests are cheap and reject most vertices; the
-                // admissibility test (edge look-ups) only decides between a
-                // vertex and the best so far.
-                if ((!found || h < firstHeight || (h == firstHeight && v < first)) && usable_(v, edge)) {
-                    firstHeight = h;
-                    first = v;
-                    found = true;
-                }
+                out[kept] = {ids[i], at};
+                kept += norm2(x) <= radius2;
             }
+            inBallCount_ += kept;
         });
-        if (found) return mid + (p - mid) * (firstHeight / height);
+        // The best so far: the smallest height, then the smallest index.
+        // The one branch is taken by a vertex in the slab nearer than the
+        // best so far, seldom once one is found; only then is it asked
+        // whether the vertex is admissible (edge look-ups).
+        double firstHeight = std::numeric_limits<double>::infinity();
+        uint32_t first = kNoIndex;
+        for (size_t i = 0; i < inBallCount_; ++i) {
+            const int32_t* q = inBall_[i].point;
+            const Vec3 x = Vec3{double(q[0]), double(q[1]), double(q[2])} - mid;
+            const uint32_t v = inBall_[i].id;
+            const double h = dot(x, ahead);
+            const double along = dot(x, e) / edgeLength;
+            const bool inSlab = (h > 0) & !(along > halfSlab) & !(along < -halfSlab);
+            if (inSlab & ((h < firstHeight) | ((h == firstHeight) & (v < first))) && usable_(v, edge)) {
+                firstHeight = h;
+                first = v;
+            }
+        }
+        if (first != kNoIndex) return mid + (p - mid) * (firstHeight / height);
     }
     return p;
 }

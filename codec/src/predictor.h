@@ -54,7 +54,7 @@ public:
     bool searchedBall() const { return searchedBall_; }
     template <class Visit>
     void forEachInBall(Visit visit) const {
-        for (const BallVertex& b : inBall_) visit(b.id, b.point);
+        for (size_t i = 0; i < inBallCount_; ++i) visit(inBall_[i].id, inBall_[i].point);
     }
 
 private:
@@ -75,7 +75,8 @@ private:
         uint32_t id;
         const int32_t* point;
     };
-    std::vector<BallVertex> inBall_;
+    std::vector<BallVertex> inBall_;  // the first inBallCount_ entries; the rest is room
+    size_t inBallCount_ = 0;
 };
 
 }  // namespace drm

