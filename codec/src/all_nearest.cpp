@@ -144,10 +144,9 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
     // above, index below, so that key order is (distance, index) order),
     // kept sorted by insertion: a block holds a few dozen points, most of
     // them farther than the running (k + 1)-th and dismissed by one compare.
-    // best[-1] holds 0, no key above it, so that the insertion stops there
-    // without testing the index.
-    std::vector<uint64_t> slots(k + 2, 0);
-    uint64_t* const best = slots.data() + 1;
+    std::vector<uint64_t> slots(k + 1);
+    uint64_t* const best = slots.data();
+    constexpr uint64_t kFarther = ~uint64_t(0);
     // The 26 other cells' keys less the cell's own, in the order above
     // (modulo 2^64: a step down borrows from the fields above, which the
     // cell's own key pays back).
@@ -202,10 +201,12 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
             // than a (k + 1)-th found below the cutoff.
             const int64_t cutoff = clearance >= (int64_t(1) << 16) ? int64_t(1) << 31
                                                                    : std::min(clearance * clearance, int64_t(1) << 31);
-            // Until k + 1 are kept every candidate below the cutoff enters
-            // (shifting only the kept ones); after that only those below the
-            // (k + 1)-th, which drops out.
-            size_t kept = 0;
+            // Every candidate below the cutoff and the (k + 1)-th so far
+            // enters; the list starts full of "farther than any" (keys stay
+            // below 2^63). Where one enters is a coin toss to a branch
+            // predictor, so the insertion has no branch: with the list
+            // sorted, entry i becomes max(best[i - 1], min(best[i], key)).
+            std::fill(best, best + k + 1, kFarther);
             int64_t bound = cutoff - 1;  // the farthest distance that can still enter
             const int64_t px = p[0], py = p[1], pz = p[2];
             for (size_t r = 0; r < runCount; ++r) {
@@ -217,19 +218,13 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
                     const int64_t d2 = ex * ex + ey * ey + ez * ez;
                     if (d2 > bound) continue;
                     const uint64_t key = uint64_t(d2) << 32 | *qId;
-                    // Signed, so that best[at - 1] may be the sentinel.
-                    ptrdiff_t at = ptrdiff_t(kept);
-                    if (kept <= k) {
-                        ++kept;
-                    } else {
-                        if (key >= best[k]) continue;
-                        at = ptrdiff_t(k);
-                    }
-                    for (; best[at - 1] > key; --at) best[at] = best[at - 1];
-                    best[at] = key;
-                    if (kept > k) bound = int64_t(best[k] >> 32);
+                    if (key >= best[k]) continue;
+                    for (size_t i = k; i > 0; --i) best[i] = std::max(best[i - 1], std::min(best[i], key));
+                    best[0] = std::min(best[0], key);
+                    bound = std::min(bound, int64_t(best[k] >> 32));
                 }
             }
+            const size_t kept = size_t(std::find(best, best + k + 1, kFarther) - best);
             // The point itself is among them (distance 0), with k others.
             if (kept <= k) {
                 uncertain.push_back(self);

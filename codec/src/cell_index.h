@@ -79,6 +79,7 @@ class DecodedCells {
 public:
     explicit DecodedCells(int cellBits) : cellBits_(cellBits) {}
     int cellBits() const { return cellBits_; }
+    void reserve(size_t vertices) { nodes_.reserve(vertices); }
 
     void insert(uint32_t v, GridPoint at) {
         uint32_t& head = head_.at(key(at.x, at.y, at.z));

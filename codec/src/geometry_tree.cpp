@@ -1042,12 +1042,16 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     // tables grow as they are decoded, so a short or garbage section fails
     // before memory is committed to it.
     CodingState s(cellBits, formatVersion, flagChoices, frame);
-    const size_t initial = std::min<size_t>(n, size_t(1) << 16);
+    // Room for as many vertices as the section could hold at a bit each
+    // (real meshes take several): tables sized once are not copied as they
+    // grow, and touch half the pages. A count beyond that grows as before.
+    const size_t initial = std::min<size_t>(n, std::max<size_t>(size_t(1) << 16, 8 * size));
     s.pos.reserve(initial);
     s.parentOf.reserve(initial);
     s.magnitude.reserve(3 * initial);
     if (s.signContexts) s.signs.reserve(3 * initial);
     s.childCountOf.reserve(initial);
+    s.cells.reserve(initial);
     TreeWalk walk;
     uint64_t promised = 0;  // children announced but not yet decoded
     for (uint32_t self = 0; self < n; ++self) {

@@ -92,7 +92,7 @@ public:
         for (size_t i = 0; i < keys_.size(); ++i) {
             const uint64_t key = keys_[i];
             const bool used = key != kEmptyKey;
-            const uint64_t asked = used ? key : 0;
+            const uint64_t asked = key & (uint64_t(0) - uint64_t(used));  // 0 if unused, without a branch
             keptKeys[kept] = key;
             keptValues[kept] = values_[i];
             kept += used & keep(uint32_t(asked >> 32), uint32_t(asked));
