@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "mesh_input.h"
 #include "ranked_mesh.h"
+#include "render/module.h"
 #include "render/picture.h"
 
 #include <drm_vcg/file_io.h>
@@ -143,7 +144,7 @@ int runRender(const std::vector<std::string>& args) {
 
     std::vector<uint8_t> png;
     try {
-        png = render::renderPng(scene);
+        png = render::renderPngInModule(scene);
     } catch (const drm::Error& e) {
         throw drm::Error(e.kind(), "cannot render " + input + ": " + e.what());
     }

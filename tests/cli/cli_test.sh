@@ -417,6 +417,22 @@ render_failures)
     expect_error 1 - render half.drm out.png
     [ "$(cat out.png)" = precious ] || fail "a failed render changed the existing output"
     ;;
+render_module)
+    # Qt is loaded by `drm render` alone, from drm-render.so beside drm: the
+    # tool itself does not link it (it would cost every command ~11 ms of
+    # start-up), and without the module the other commands still work
+    # while render fails with one clear line.
+    ! ldd "$drm" | grep -q 'libQt5' || fail "drm links Qt: $(ldd "$drm" | grep libQt5)"
+    [ -e "$(dirname "$drm")/drm-render.so" ] || fail "no drm-render.so beside $drm"
+    mkdir alone
+    cp "$drm" alone/drm
+    drm=$work/alone/drm
+    run 0 encode "$data/torus.ply" torus.drm
+    run 0 decode torus.drm torus-back.ply
+    expect_error 1 out.png render "$data/torus.ply" out.png
+    grep -q 'drm-render.so, which could not be loaded: looked at .*alone/\./drm-render.so' err.txt ||
+        fail "the error does not say where the renderer was looked for: $(cat err.txt)"
+    ;;
 many_files)
     # Several inputs into a folder: every output byte-identical to a single run.
     meshes="torus nefertiti fandisk blobby-3cc"
