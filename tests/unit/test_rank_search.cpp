@@ -137,17 +137,31 @@ TEST(RankSearch, NearestAmongOfferedVertices) {
         auto offerAll = [&](auto offer) {
             for (uint32_t v = 200; v-- > 0;) offer(v, s.grid.data() + 3 * size_t(v));
         };
-        const std::vector<RankedVertex> among = search.nearestAmong(fp, 4, edge, offerAll);
-        EXPECT_EQ(among, search.nearest(fp, 4, edge));
         auto offerEven = [&](auto offer) {
             for (uint32_t v = 0; v < 200; v += 2) offer(v, s.grid.data() + 3 * size_t(v));
         };
-        std::vector<RankedVertex> even;
+        std::vector<RankedVertex> allEven;
         for (uint32_t v = 0; v < 200; v += 2)
-            if (v != edge.vi && v != edge.vj) even.emplace_back(search.distance2(fp, v), v);
-        std::sort(even.begin(), even.end());
-        even.resize(4);
-        EXPECT_EQ(search.nearestAmong(fp, 4, edge, offerEven), even);
+            if (v != edge.vi && v != edge.vj) allEven.emplace_back(search.distance2(fp, v), v);
+        std::sort(allEven.begin(), allEven.end());
+        // Up to 4 (the codec's lists) the insertion has no branches; more
+        // take the general insertion.
+        for (size_t count = 1; count <= 6; ++count) {
+            SCOPED_TRACE(count);
+            const std::vector<RankedVertex> among = search.nearestAmong(fp, count, edge, offerAll);
+            EXPECT_EQ(among, search.nearest(fp, count, edge));
+            const std::vector<RankedVertex> even(allEven.begin(), allEven.begin() + ptrdiff_t(count));
+            EXPECT_EQ(search.nearestAmong(fp, count, edge, offerEven), even);
+            // Fewer offered than asked for: all of them, in order.
+            auto offerThree = [&](auto offer) {
+                for (uint32_t v : {150u, 70u, 110u}) offer(v, s.grid.data() + 3 * size_t(v));
+            };
+            std::vector<RankedVertex> three;
+            for (uint32_t v : {150u, 70u, 110u}) three.emplace_back(search.distance2(fp, v), v);
+            std::sort(three.begin(), three.end());
+            three.resize(std::min<size_t>(3, count));
+            EXPECT_EQ(search.nearestAmong(fp, count, edge, offerThree), three);
+        }
     }
   }
 }
