@@ -27,9 +27,10 @@ namespace {
 // in page by page all over again: 10 % of `drm encode`'s time on igea went
 // to the kernel and to zeroing fresh pages. Blocks up to the largest
 // threshold glibc allows come from the heap instead, and the heap keeps
-// what is freed for the next table. Peak memory is unchanged (freed memory
-// is reused, not added to). Process-wide, so the tool's choice, not the
-// library's.
+// what is freed for the next table. Peak memory grows a little, as blocks
+// freed early stay beside later ones (igea x4: encode +4 %, decode +5 %;
+// igea x16 encode +9 %); 64 corpus files on two workers: 0.92 of the CPU
+// and a lower peak. Process-wide, so the tool's choice, not the library's.
 void keepFreedMemoryForReuse() {
 #ifdef __GLIBC__
     mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's maximum on 64-bit systems

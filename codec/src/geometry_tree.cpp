@@ -1042,10 +1042,13 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     // tables grow as they are decoded, so a short or garbage section fails
     // before memory is committed to it.
     CodingState s(cellBits, formatVersion, flagChoices, frame);
-    // Room for as many vertices as the section could hold at a bit each
-    // (real meshes take several): tables sized once are not copied as they
-    // grow, and touch half the pages. A count beyond that grows as before.
-    const size_t initial = std::min<size_t>(n, std::max<size_t>(size_t(1) << 16, 8 * size));
+    // Room for as many vertices as the section holds at four bits each (the
+    // corpus takes 5.8 to 33 bits), up to 4M: tables sized once are not
+    // copied as they grow, and touch half the pages. A corrupt count can so
+    // reserve (not touch) about 200 MB at most; past that, tables grow as
+    // vertices are decoded.
+    constexpr size_t kMostReserved = size_t(1) << 22;
+    const size_t initial = std::min({n, std::max<size_t>(size_t(1) << 16, 2 * size), kMostReserved});
     s.pos.reserve(initial);
     s.parentOf.reserve(initial);
     s.magnitude.reserve(3 * initial);

@@ -95,7 +95,7 @@ public:
             const uint64_t asked = key & (uint64_t(0) - uint64_t(used));  // 0 if unused, without a branch
             keptKeys[kept] = key;
             keptValues[kept] = values_[i];
-            kept += used & keep(uint32_t(asked >> 32), uint32_t(asked));
+            kept += used & bool(keep(uint32_t(asked >> 32), uint32_t(asked)));
         }
         keptKeys.resize(kept);
         keptValues.resize(kept);

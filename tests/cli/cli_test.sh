@@ -422,7 +422,8 @@ render_module)
     # tool itself does not link it (it would cost every command ~11 ms of
     # start-up), and without the module the other commands still work
     # while render fails with one clear line.
-    ! ldd "$drm" | grep -q 'libQt5' || fail "drm links Qt: $(ldd "$drm" | grep libQt5)"
+    libraries=$(ldd "$drm") || fail "ldd cannot list what $drm links"
+    ! grep -q 'libQt5' <<<"$libraries" || fail "drm links Qt: $(grep libQt5 <<<"$libraries")"
     [ -e "$(dirname "$drm")/drm-render.so" ] || fail "no drm-render.so beside $drm"
     mkdir alone
     cp "$drm" alone/drm
@@ -432,6 +433,12 @@ render_module)
     expect_error 1 out.png render "$data/torus.ply" out.png
     grep -q 'drm-render.so, which could not be loaded: looked at .*alone/\./drm-render.so' err.txt ||
         fail "the error does not say where the renderer was looked for: $(cat err.txt)"
+    # A library by that name that is not drm's renderer is refused, not called.
+    libm=$(sed -n 's/.*libm\.so\.6 => \([^ ]*\).*/\1/p' <<<"$libraries")
+    [ -n "$libm" ] || fail "no libm in: $libraries"
+    cp "$libm" alone/drm-render.so
+    expect_error 1 out.png render "$data/torus.ply" out.png
+    grep -q 'alone/\./drm-render.so (not drm.s renderer)' err.txt || fail "a foreign module was not refused: $(cat err.txt)"
     ;;
 many_files)
     # Several inputs into a folder: every output byte-identical to a single run.

@@ -16,8 +16,16 @@
 #include <vector>
 
 // What the module exports: renders the scene into png and returns 0, or
-// returns 1 + the drm::ErrorKind of the failure, its message in error.
+// returns 1 + the drm::ErrorKind of the failure, its message in error, or
+// kRenderOutOfMemory.
 extern "C" int drm_render_png(const drm::render::Scene* scene, std::vector<uint8_t>* png, std::string* error);
+// Which build the module comes from: the library's version and the layout
+// of the types above (kRenderModuleAbi), so that a module left from another
+// build is refused with a message instead of being called.
+extern "C" const char* drm_render_build();
+constexpr int kRenderOutOfMemory = 100;
+// Raise when Scene, LegendEntry or the entry points change.
+constexpr int kRenderModuleAbi = 1;
 
 namespace drm {
 namespace render {
@@ -27,9 +35,13 @@ namespace render {
 // DRM_RENDER_MODULE_DIR) and in the installed library directory.
 extern const char* const kModuleName;
 
+// What drm_render_build() answers for this build (module and tool alike).
+inline std::string renderModuleBuild() { return std::string(drm::version()) + " abi " + std::to_string(kRenderModuleAbi); }
+
 // renderPng, from the module (loaded once, on first use). Throws drm::Error
-// (Io) naming the places looked at when the module cannot be loaded, and
-// the module's own errors as drm::Error of their kind.
+// (Io) naming the places looked at when the module cannot be loaded or
+// comes from another build, the module's own errors as drm::Error of their
+// kind, and std::bad_alloc when it ran out of memory.
 std::vector<uint8_t> renderPngInModule(const Scene& scene);
 
 }  // namespace render

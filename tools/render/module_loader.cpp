@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <climits>
+#include <new>
 
 namespace drm {
 namespace render {
@@ -13,17 +14,22 @@ const char* const kModuleName = "drm-render.so";
 
 namespace {
 
-// The directory of the running executable, with its trailing slash.
+// The directory of the running executable, with its trailing slash. Not
+// the current directory when /proc is missing: a module is loaded only
+// from where the tool itself lies.
 std::string executableDirectory() {
     char path[PATH_MAX];
     const ssize_t length = readlink("/proc/self/exe", path, sizeof path - 1);
-    if (length <= 0) return "./";
-    const std::string exe(path, size_t(length));
+    const std::string exe = length > 0 ? std::string(path, size_t(length)) : std::string();
     const size_t slash = exe.rfind('/');
-    return slash == std::string::npos ? "./" : exe.substr(0, slash + 1);
+    if (slash == std::string::npos)
+        throw Error(ErrorKind::Io, std::string("drm render needs its renderer, ") + kModuleName +
+                                       ", beside the drm executable, whose folder cannot be found (/proc/self/exe)");
+    return exe.substr(0, slash + 1);
 }
 
 using RenderPng = int (*)(const Scene*, std::vector<uint8_t>*, std::string*);
+using RenderBuild = const char* (*)();
 
 RenderPng loadModule() {
     static RenderPng loaded = nullptr;
@@ -33,17 +39,29 @@ RenderPng loadModule() {
     // drm finds it under the library directory (paths set by CMake).
     const std::string places[] = {here + DRM_RENDER_MODULE_DIR "/" + kModuleName,
                                   here + DRM_RENDER_INSTALLED_DIR "/" + kModuleName};
+    const std::string wanted = renderModuleBuild();
     std::string tried;
+    auto note = [&](const std::string& place, const std::string& why) {
+        tried += (tried.empty() ? " " : "; ") + place + " (" + why + ")";
+    };
     for (const std::string& place : places) {
         void* module = dlopen(place.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!module) {
             const char* why = dlerror();
-            tried += (tried.empty() ? " " : "; ") + place + (why ? std::string(" (") + why + ")" : std::string());
+            note(place, why ? why : "cannot be loaded");
             continue;
         }
-        loaded = reinterpret_cast<RenderPng>(dlsym(module, "drm_render_png"));
-        if (loaded) return loaded;
-        tried += (tried.empty() ? " " : "; ") + place + " (no drm_render_png in it)";
+        const auto build = reinterpret_cast<RenderBuild>(dlsym(module, "drm_render_build"));
+        const auto render = reinterpret_cast<RenderPng>(dlsym(module, "drm_render_png"));
+        if (!build || !render) {
+            note(place, "not drm's renderer");
+        } else if (build() != wanted) {
+            note(place, std::string("from another build: ") + build() + ", drm is " + wanted);
+        } else {
+            loaded = render;
+            return loaded;
+        }
+        dlclose(module);
     }
     throw Error(ErrorKind::Io, std::string("drm render needs its renderer, ") + kModuleName +
                                    ", which could not be loaded: looked at" + tried);
@@ -56,6 +74,7 @@ std::vector<uint8_t> renderPngInModule(const Scene& scene) {
     std::vector<uint8_t> png;
     std::string error;
     const int status = render(&scene, &png, &error);
+    if (status == kRenderOutOfMemory) throw std::bad_alloc();
     if (status != 0) throw Error(ErrorKind(status - 1), error);
     return png;
 }
