@@ -96,7 +96,7 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
         // The box of cells around the ball holds a few dozen vertices, and
         // most of them lie outside the ball, behind the edge or beside the
-        // slab; which, is as good as a coin toss to a branch predictor. So
+        // slab, and which it is is a coin toss to a branch predictor. So
         // the ball is gathered first without a branch (every vertex is
         // written to the list, and kept there if inside), from the index's
         // runs where they lie; then the slab test, also without a branch,
