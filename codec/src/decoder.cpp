@@ -26,6 +26,7 @@
 #include "rank_coder.h"
 #include "repair_section.h"
 #include "spatial_index.h"
+#include "start_triangle.h"
 #include "stats.h"
 #include "traversal.h"
 #include "vertex_order.h"
@@ -98,12 +99,33 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
     RankDecoder coder(d.parts.connectivity, d.parts.connectivitySize, model.contextCount());
     std::vector<uint64_t>& histogram = result.stats.rankHistogram;
 
-    const size_t components = header.startTriangles.size() / 3;
-    for (size_t c = 0; c < components; ++c) {
-        const uint32_t* start = &header.startTriangles[3 * c];
+    const bool startsInStream = d.parts.formatVersion >= kFirstFormatWithStartsInConnectivity;
+    std::unique_ptr<StartCursor> cursor(startsInStream ? new StartCursor(traversal) : nullptr);
+    const uint64_t n = d.traversalVertices;
+    uint32_t lastStart = 0;
+    for (size_t c = 0; c < header.componentCount; ++c) {
         if (traversal.triangleCount() >= faceCount)
             throw Error(ErrorKind::Corrupt, "corrupt file: more components than the header's " + std::to_string(faceCount) + " faces");
         try {
+            uint32_t start[3];
+            if (startsInStream) {
+                const uint32_t from = cursor->at(lastStart);
+                if (from >= n) throw Error(ErrorKind::Corrupt, "every vertex is taken before it starts");
+                const uint32_t skipped = coder.getStartGap(StartField::Skipped);
+                const uint32_t second = coder.getStartGap(StartField::Second);
+                const uint32_t third = coder.getStartGap(StartField::Third);
+                if (coder.bytesPastEnd() > 0)
+                    throw Error(ErrorKind::Corrupt, "the connectivity section ends before its start triangle");
+                if (skipped >= n)
+                    throw Error(ErrorKind::Corrupt, "its start vertex lies " + std::to_string(skipped) + " vertices on, of " +
+                                std::to_string(n));
+                start[0] = uint32_t((from + uint64_t(skipped)) % n);
+                start[1] = vertexAtGap(start[0], second, n);
+                start[2] = vertexAtGap(start[0], third, n);
+                lastStart = start[0];
+            } else {
+                std::copy_n(&header.startTriangles[3 * c], 3, start);
+            }
             traversal.startComponent(start[0], start[1], start[2]);
             result.faceRank.push_back(0);
         } catch (const Error& e) {

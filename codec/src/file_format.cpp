@@ -53,8 +53,7 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     out.varint(h.faceCount);
     if (h.hasRepairs) out.varint(h.copyCount);
     if (h.attributeSections > 0) out.varint(h.attributeSections);
-    out.varint(h.startTriangles.size() / 3);
-    for (uint32_t v : h.startTriangles) out.varint(v);
+    out.varint(h.componentCount);  // the start triangles are in the connectivity section
     return std::move(out.buffer());
 }
 
@@ -102,11 +101,17 @@ FileHeader decodeHeader(ByteReader& in, int version) {
         h.attributeSections = in.count("attribute section count", kMaxAttributeSections);
         if (h.attributeSections == 0) throw Error(ErrorKind::Corrupt, "corrupt file: the attribute flag is set with no attribute section");
     }
-    // Every start vertex takes at least one byte: the count is bounded by
-    // what is left before anything is allocated.
-    const uint64_t components = in.count("component count", std::min<uint64_t>(h.faceCount, in.remaining() / 3));
-    h.startTriangles.resize(size_t(components) * 3);
-    for (uint32_t& v : h.startTriangles) v = uint32_t(in.count("start triangle vertex", h.vertexCount + h.copyCount - 1));
+    if (version >= kFirstFormatWithStartsInConnectivity) {
+        // Nothing is allocated by the count: the decoder checks each
+        // component against the faces it has left.
+        h.componentCount = in.count("component count", h.faceCount);
+    } else {
+        // Every start vertex takes at least one byte: the count is bounded
+        // by what is left before anything is allocated.
+        h.componentCount = in.count("component count", std::min<uint64_t>(h.faceCount, in.remaining() / 3));
+        h.startTriangles.resize(size_t(h.componentCount) * 3);
+        for (uint32_t& v : h.startTriangles) v = uint32_t(in.count("start triangle vertex", h.vertexCount + h.copyCount - 1));
+    }
     if (in.remaining() != 0)
         throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(in.remaining()) + " unexpected bytes at the end of the header");
     const std::string problem = headerProblem(h);
@@ -134,8 +139,10 @@ std::string headerProblem(const FileHeader& h) {
     if (h.attributeSections > kMaxAttributeSections)
         return std::to_string(h.attributeSections) + " attribute sections (at most " +
                std::to_string(kMaxAttributeSections) + ")";
-    if (h.startTriangles.size() % 3 != 0 || h.startTriangles.size() / 3 > h.faceCount)
-        return "more components than faces";
+    if (h.componentCount > h.faceCount) return "more components than faces";
+    if (!h.startTriangles.empty() && h.startTriangles.size() != 3 * h.componentCount)
+        return std::to_string(h.startTriangles.size()) + " start triangle vertices for " +
+               std::to_string(h.componentCount) + " components";
     for (uint32_t v : h.startTriangles)
         if (v >= h.vertexCount + h.copyCount) return "a start triangle refers to vertex " + std::to_string(v);
     return "";

@@ -12,6 +12,8 @@
 
 namespace drm {
 
+constexpr int kFirstFormatWithStartsInConnectivity = 8;
+
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
 constexpr uint16_t kFormatVersion = kFileFormatVersion;  // written; read: drm.h's readable range
 
@@ -46,7 +48,11 @@ struct FileHeader {
     uint64_t copyCount = 0;
     // With attributes: how many attribute sections follow the others.
     uint64_t attributeSections = 0;
-    std::vector<uint32_t> startTriangles;  // 3 vertex indices per component
+    // Edge-connected components the traversal codes. Formats 1 to 7 list
+    // each one's start triangle here (3 vertex indices); from format 8 the
+    // connectivity section holds them (decoder.cpp) and this stays empty.
+    uint64_t componentCount = 0;
+    std::vector<uint32_t> startTriangles;
 };
 
 struct FileParts {

@@ -45,6 +45,13 @@ std::vector<uint16_t> rankPrior() {
 
 std::vector<uint16_t> escapeLengthPrior() { return std::vector<uint16_t>(kMaxEscapeBits, 1); }
 
+// A start gap g codes w = g + 1 (1 .. 2^32) as its bit length, 1..33.
+constexpr uint32_t kMaxStartGapBits = 33;
+std::vector<AdaptiveFrequencies> startLengthModels() {
+    return std::vector<AdaptiveFrequencies>(kStartFields,
+                                            AdaptiveFrequencies(std::vector<uint16_t>(kMaxStartGapBits, 1)));
+}
+
 int rankClass(uint32_t rank) { return rank == 1 ? 1 : rank == 2 ? 2 : 0; }
 constexpr int kRankClasses = 3;
 
@@ -122,7 +129,8 @@ AdaptiveFrequencies& RankContexts::table(int previousClass, int extraContext) {
     return tables_[index];
 }
 
-RankEncoder::RankEncoder(int extraContexts) : ranks_(extraContexts), escapeLengths_(escapeLengthPrior()) {}
+RankEncoder::RankEncoder(int extraContexts)
+    : ranks_(extraContexts), escapeLengths_(escapeLengthPrior()), startLengths_(startLengthModels()) {}
 
 void RankEncoder::put(uint32_t rank, int extraContext) {
     AdaptiveFrequencies& model = ranks_.table(previousClass_, extraContext);
@@ -137,10 +145,26 @@ void RankEncoder::put(uint32_t rank, int extraContext) {
     coder_.encodeWideBits(w, length - 1);  // the bits below the leading one
 }
 
+void RankEncoder::putStartGap(StartField field, uint32_t gap) {
+    const uint64_t w = uint64_t(gap) + 1;
+    const int length = bitLength(w);
+    startLengths_[size_t(field)].encode(coder_, uint32_t(length - 1));
+    coder_.encodeWideBits(w, length - 1);
+}
+
 std::vector<uint8_t> RankEncoder::finish() { return coder_.finish(); }
 
 RankDecoder::RankDecoder(const uint8_t* data, size_t size, int extraContexts)
-    : coder_(data, size), ranks_(extraContexts), escapeLengths_(escapeLengthPrior()) {}
+    : coder_(data, size), ranks_(extraContexts), escapeLengths_(escapeLengthPrior()),
+      startLengths_(startLengthModels()) {}
+
+uint32_t RankDecoder::getStartGap(StartField field) {
+    const int length = int(startLengths_[size_t(field)].decode(coder_)) + 1;
+    const uint64_t w = (uint64_t(1) << (length - 1)) | coder_.decodeWideBits(length - 1);
+    if (w - 1 > UINT32_MAX)
+        throw Error(ErrorKind::Corrupt, "corrupt connectivity stream: a start triangle's gap does not fit in 32 bits");
+    return uint32_t(w - 1);
+}
 
 uint32_t RankDecoder::get(int extraContext) {
     AdaptiveFrequencies& model = ranks_.table(previousClass_, extraContext);

@@ -6,6 +6,9 @@
 // below kRankDirectSymbols have a symbol each; larger ranks take an escape
 // symbol followed by an Exp-Golomb code of rank - kRankDirectSymbols, so any
 // uint32 can be coded.
+//
+// From format 8 the stream also holds each component's start triangle, as
+// three gaps (putStartGap) before the component's first rank.
 #ifndef DRM_RANK_CODER_H
 #define DRM_RANK_CODER_H
 
@@ -19,6 +22,12 @@ namespace drm {
 
 // Ranks 0..kRankDirectSymbols-1 are coded as symbols of their own.
 constexpr uint32_t kRankDirectSymbols = 24;
+
+// The fields of a start triangle (format 8, docs/format.md): the first
+// vertex's distance from the decoder's cursor, then the other two vertices'
+// distances past it. Each field has its own model of bit lengths.
+enum class StartField { Skipped = 0, Second = 1, Third = 2 };
+constexpr int kStartFields = 3;
 
 // An adaptive frequency table over symbols 0..size-1: every coded symbol
 // gains a fixed increment, and the counts are halved when their total grows
@@ -78,6 +87,10 @@ public:
     explicit RankEncoder(int extraContexts = 1);
     // rank: any value (0 = boundary edge); extraContext in [0, extraContexts).
     void put(uint32_t rank, int extraContext = 0);
+    // Any uint32 gap, as an adaptive Exp-Golomb code (its bit length in
+    // field's model, then the bits below its leading one). The rank context
+    // is left as it was.
+    void putStartGap(StartField field, uint32_t gap);
     // Flushes and hands over the bytes; the encoder is spent.
     std::vector<uint8_t> finish();
 
@@ -85,6 +98,7 @@ private:
     RangeEncoder coder_;
     RankContexts ranks_;
     AdaptiveFrequencies escapeLengths_;       // bit lengths of escaped ranks
+    std::vector<AdaptiveFrequencies> startLengths_;  // [StartField]: bit lengths of gap + 1
     int previousClass_ = 0;
 };
 
@@ -94,6 +108,8 @@ public:
     // The next rank. Throws Error if the stream holds a rank that does not
     // fit in 32 bits (corrupt data); otherwise any input decodes to values.
     uint32_t get(int extraContext = 0);
+    // The gap putStartGap coded; throws Error if it does not fit in 32 bits.
+    uint32_t getStartGap(StartField field);
     // See RangeDecoder::bytesPastEnd: 0 after the last rank of an intact
     // stream.
     size_t bytesPastEnd() const { return coder_.bytesPastEnd(); }
@@ -102,6 +118,7 @@ private:
     RangeDecoder coder_;
     RankContexts ranks_;
     AdaptiveFrequencies escapeLengths_;
+    std::vector<AdaptiveFrequencies> startLengths_;
     int previousClass_ = 0;
 };
 

@@ -8,7 +8,7 @@ void fillStatsFromHeader(Stats& stats, const FileParts& parts, size_t fileSize) 
     const FileHeader& header = parts.header;
     stats.vertices = header.vertexCount;
     stats.faces = header.faceCount;
-    stats.components = header.startTriangles.size() / 3;
+    stats.components = header.componentCount;
     stats.bits = header.grid.bits;
     stats.predictor = header.predictor;
     stats.curvature = header.curvature;

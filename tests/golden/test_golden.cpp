@@ -6,7 +6,8 @@
 // v2/: before format 3's local frame; v3/: before format 4's nearest
 // candidates from the predictor's ball; v4/: before format 5's front
 // neighbours; v5/: before format 6's sign contexts; v6/: before format 7's
-// frame along the walk and tangent signs), so the decoder keeps reading what
+// frame along the walk and tangent signs; v7/: before format 8's start
+// triangles in the connectivity section), so the decoder keeps reading what
 // users already have.
 #include <gtest/gtest.h>
 
@@ -81,6 +82,16 @@ TEST(GoldenFormat5, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden(
 TEST(GoldenFormat5, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v5", 5); }
 TEST(GoldenFormat5, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v5", 5); }
 TEST(GoldenFormat5, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v5", 5); }
+// Format 7's files, as its last encoder (c1bfbba) wrote them: the start
+// triangles in the header, three varints each.
+TEST(GoldenFormat7, Torus) { expectDecodesToGolden("torus", "/v7", 7); }
+TEST(GoldenFormat7, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v7", 7); }
+TEST(GoldenFormat7, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v7", 7); }
+TEST(GoldenFormat7, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v7", 7); }
+TEST(GoldenFormat7, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v7", 7); }
+TEST(GoldenFormat7, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v7", 7); }
+TEST(GoldenFormat7, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres", "/v7", 7); }
+TEST(GoldenFormat7, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine", "/v7", 7); }
 
 // Format 6's files, as its last encoder (79422de) wrote them: the frame
 // not turned about its normal, every sign in format 6's nine contexts.
@@ -112,7 +123,7 @@ TEST(GoldenFormat4, FrontNeighbourFlagIsRefused) {
     }
     // The same file as written, and format 5's and today's with the flag, decode.
     EXPECT_NO_THROW(drm::decode(file));
-    for (const char* folder : {"/v5", "/v6", ""}) {
+    for (const char* folder : {"/v5", "/v6", "/v7", ""}) {
         const std::vector<uint8_t> later =
             drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + folder + "/blobby-3cc.drm");
         ASSERT_TRUE(drm_test::parseSections(later, &sections));

@@ -69,10 +69,6 @@ bool readHeader(const std::vector<uint8_t>& payload, HeaderFields* h) {
     if (!in.varint(&h->vertexCount) || !in.varint(&h->faceCount)) return false;
     if ((h->flags & kRepairsFlag) && !in.varint(&h->copyCount)) return false;
     if (!in.varint(&h->componentCount)) return false;
-    if (h->componentCount > payload.size()) return false;
-    h->startVertices.resize(size_t(h->componentCount) * 3);
-    for (uint64_t& s : h->startVertices)
-        if (!in.varint(&s)) return false;
     return in.atEnd();
 }
 
@@ -86,7 +82,6 @@ std::vector<uint8_t> writeHeader(const HeaderFields& h) {
     appendVarint(out, h.faceCount);
     if (h.flags & kRepairsFlag) appendVarint(out, h.copyCount);
     appendVarint(out, h.componentCount);
-    for (uint64_t s : h.startVertices) appendVarint(out, s);
     return out;
 }
 

@@ -22,8 +22,9 @@ struct HeaderFields {
     uint64_t vertexCount = 0;
     uint64_t faceCount = 0;
     uint64_t copyCount = 0;               // present only with kRepairsFlag
-    uint64_t componentCount = 0;          // written as is, even if it disagrees with startVertices
-    std::vector<uint64_t> startVertices;  // 3 per component
+    // From format 8 the start triangles are in the connectivity section
+    // (docs/format.md); the header keeps only their count.
+    uint64_t componentCount = 0;
 };
 
 // False if payload is not exactly a header as the format describes it.

@@ -307,8 +307,8 @@ std::string markdownReport(const BenchRun& run) {
     for (size_t c = 0; c < run.codecs.size(); ++c)
         out << "- **" << run.codecs[c] << "**: " << run.descriptions[c] << ".\n";
     out << "\n"
-        << "How connectivity is counted. drm: the rank stream, as the paper counts it (header and start "
-        << "triangles not included). Draco: the real cl10/cl7 file is written by a subclass of "
+        << "How connectivity is counted. drm: the connectivity section, the rank stream as the paper counts it "
+        << "and, from format 8, the start triangles of the components (the header not included). Draco: the real cl10/cl7 file is written by a subclass of "
         << "`draco::MeshEdgebreakerEncoder` that records the buffer size before and after the connectivity "
         << "stage (`EncodeConnectivity`, a protected virtual of Draco's public headers); the file is checked to be "
         << "byte-identical to `draco::Encoder`'s, and the stage holds the Edgebreaker symbols, split and hole data "

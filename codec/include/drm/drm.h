@@ -76,9 +76,9 @@ constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
-constexpr int kFileFormatVersion = 7;
+constexpr int kFileFormatVersion = 8;
 constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 7;
+constexpr int kNewestReadableFormatVersion = 8;
 
 // The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
 // MeshLab rank filter, README's legend): bucket 0 is a component's start
@@ -286,7 +286,8 @@ struct EncodeOptions {
 };
 
 // What a .drm file holds, measured. Byte counts are exact sizes of the file's
-// parts: connectivityBytes is the rank stream alone (as the paper counts it),
+// parts: connectivityBytes is the connectivity section, the rank stream (as
+// the paper counts it) and, from format 8, the start triangles coded in it;
 // totalBytes the whole file.
 struct Stats {
     uint64_t vertices = 0;

@@ -1,0 +1,184 @@
+// Format 8's start triangles (start_triangle.h): the cursor they are coded
+// from, their gaps, their coding beside the ranks, and the decoder's answer
+// to start triangles no encoder writes.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "drm/drm.h"
+#include "file_format.h"
+#include "rank_coder.h"
+#include "start_triangle.h"
+#include "test_meshes.h"
+#include "traversal.h"
+
+using namespace drm;
+
+namespace {
+
+// The cursor by definition: the first untouched vertex at or after `from`,
+// cyclically; the vertex count if none.
+uint32_t firstUntouchedByScan(const std::vector<bool>& touched, uint32_t from) {
+    const uint32_t n = uint32_t(touched.size());
+    for (uint32_t k = 0; k < n; ++k) {
+        const uint32_t v = (from + k) % n;
+        if (!touched[v]) return v;
+    }
+    return n;
+}
+
+}  // namespace
+
+TEST(StartCursor, AgreesWithAScanWhateverOrderVerticesAreTouchedIn) {
+    std::mt19937 rng(7);
+    for (uint32_t n : {3u, 4u, 10u, 61u, 300u}) {
+        SCOPED_TRACE(n);
+        std::vector<uint32_t> shuffled(n);
+        for (uint32_t v = 0; v < n; ++v) shuffled[v] = v;
+        std::shuffle(shuffled.begin(), shuffled.end(), rng);
+        Traversal traversal(n, n, nullptr);
+        StartCursor cursor(traversal);
+        std::vector<bool> touched(n, false);
+        // Start triangles over disjoint random vertices (some are never
+        // touched, as vertices in no face), asking from random places
+        // between them, as a corrupt file may.
+        for (size_t k = 0; k + 3 <= n; k += 3) {
+            for (int q = 0; q < 5; ++q) {
+                const uint32_t from = uint32_t(rng() % n);
+                ASSERT_EQ(cursor.at(from), firstUntouchedByScan(touched, from)) << "from " << from;
+            }
+            if (k + 3 > n - n / 10) break;
+            traversal.startComponent(shuffled[k], shuffled[k + 1], shuffled[k + 2]);
+            for (size_t i = k; i < k + 3; ++i) touched[shuffled[i]] = true;
+        }
+        for (uint32_t from = 0; from < n; ++from) EXPECT_EQ(cursor.at(from), firstUntouchedByScan(touched, from));
+    }
+    // Every vertex touched: the vertex count.
+    Traversal full(3, 1, nullptr);
+    StartCursor cursor(full);
+    EXPECT_EQ(cursor.at(1), 1u);
+    full.startComponent(2, 0, 1);
+    EXPECT_EQ(cursor.at(0), 3u);
+    EXPECT_EQ(cursor.at(2), 3u);
+}
+
+TEST(StartTriangle, GapsRoundTripAndRefuseWhatNoVertexHas) {
+    for (size_t n : {2u, 3u, 17u}) {
+        for (uint32_t first = 0; first < n; ++first)
+            for (uint32_t v = 0; v < n; ++v) {
+                if (v == first) continue;
+                const uint32_t gap = startGap(first, v, n);
+                EXPECT_LE(gap, n - 2);
+                EXPECT_EQ(vertexAtGap(first, gap, n), v);
+            }
+        try {
+            vertexAtGap(0, uint32_t(n - 1), n);  // the first vertex itself
+            ADD_FAILURE() << "gap n - 1 accepted";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::Corrupt);
+        }
+    }
+    EXPECT_EQ(startGap(5, 6, 100), 0u);   // the next vertex costs least
+    EXPECT_EQ(startGap(5, 4, 100), 98u);  // one back wraps round
+    EXPECT_THROW(vertexAtGap(0, UINT32_MAX, size_t(UINT32_MAX) + 1), Error);
+    EXPECT_EQ(vertexAtGap(1, UINT32_MAX - 1, size_t(UINT32_MAX) + 1), 0u);
+}
+
+TEST(StartTriangle, GapsCodedBetweenRanksLeaveTheRanksAlone) {
+    const uint32_t gaps[] = {0, 1, 2, 3, 7, 8, 1000, 0x7FFFFFFFu, 0xFFFFFFFEu, 0xFFFFFFFFu};
+    const uint32_t ranks[] = {1, 2, 1, 1, 0, 3, 30, 1, 2, 2};
+    RankEncoder encoder(2);
+    RankEncoder ranksOnly(2);
+    for (size_t i = 0; i < 10; ++i) {
+        encoder.putStartGap(StartField(i % kStartFields), gaps[i]);
+        encoder.put(ranks[i], int(i % 2));
+        ranksOnly.put(ranks[i], int(i % 2));
+    }
+    const std::vector<uint8_t> bytes = encoder.finish();
+    RankDecoder decoder(bytes.data(), bytes.size(), 2);
+    for (size_t i = 0; i < 10; ++i) {
+        EXPECT_EQ(decoder.getStartGap(StartField(i % kStartFields)), gaps[i]);
+        EXPECT_EQ(decoder.get(int(i % 2)), ranks[i]);
+    }
+    EXPECT_EQ(decoder.bytesPastEnd(), 0u);
+    // A gap of 0 in a model that has seen only zeros costs well under a bit.
+    RankEncoder zeros;
+    for (int i = 0; i < 100; ++i) zeros.putStartGap(StartField::Skipped, 0);
+    EXPECT_LE(zeros.finish().size(), 4u);
+}
+
+namespace {
+
+// file with its connectivity section replaced by `connectivity`, written
+// as a valid file (header, checksums) of the current format.
+std::vector<uint8_t> withConnectivity(const std::vector<uint8_t>& file, const std::vector<uint8_t>& connectivity) {
+    const FileParts parts = readFile(file.data(), file.size());
+    const std::vector<uint8_t> geometry(parts.geometry, parts.geometry + parts.geometrySize);
+    const std::vector<uint8_t> order(parts.vertexOrder, parts.vertexOrder + parts.vertexOrderSize);
+    const std::vector<uint8_t> repairs(parts.repairs, parts.repairs + parts.repairsSize);
+    return writeFile(parts.header, connectivity, geometry, order, repairs, {}, nullptr);
+}
+
+struct StartGaps {
+    const char* what;
+    uint32_t skipped, second, third;
+};
+
+}  // namespace
+
+TEST(StartTriangle, DecoderRefusesStartTrianglesNoEncoderWrites) {
+    const Mesh mesh = drm_test::icosphere(1);  // 42 vertices
+    const std::vector<uint8_t> file = encode(mesh).bytes;
+    const uint32_t n = uint32_t(readFile(file.data(), file.size()).header.vertexCount);
+    ASSERT_EQ(n, 42u);
+    const StartGaps cases[] = {
+        {"a first vertex past the last", n, 0, 1},
+        {"a first vertex 2^32 - 1 on", UINT32_MAX, 0, 1},
+        {"a second vertex at the first", 0, n - 1, 1},
+        {"a third vertex at the first", 0, 0, n - 1},
+        {"a third vertex far past the last", 0, 0, UINT32_MAX},
+        {"the second vertex twice", 0, 5, 5},
+    };
+    for (const StartGaps& c : cases) {
+        SCOPED_TRACE(c.what);
+        RankEncoder stream;
+        stream.putStartGap(StartField::Skipped, c.skipped);
+        stream.putStartGap(StartField::Second, c.second);
+        stream.putStartGap(StartField::Third, c.third);
+        for (int i = 0; i < 200; ++i) stream.put(1);
+        const std::vector<uint8_t> damaged = withConnectivity(file, stream.finish());
+        try {
+            decode(damaged);
+            ADD_FAILURE() << "decoded";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::Corrupt);
+            EXPECT_NE(std::string(e.what()).find("component 0"), std::string::npos) << e.what();
+        }
+    }
+    // A stream that ends where a start triangle should be.
+    try {
+        decode(withConnectivity(file, {}));
+        ADD_FAILURE() << "decoded an empty connectivity section";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::Corrupt);
+    }
+}
+
+// The encoder's start triangles decode to the faces it was given, whatever
+// vertices lie in no face, however many components there are, and wherever
+// its search for a cheaper start puts the first one (meshes this small try
+// several, encoder.cpp).
+TEST(StartTriangle, ComponentsAmongIsolatedVerticesRoundTrip) {
+    Mesh mesh = drm_test::append(drm_test::icosphere(1), drm_test::tetrahedron(), 3, 0, 0);
+    mesh = drm_test::append(mesh, drm_test::gridPatch(4, true), 0, 3, 0);
+    for (int i = 0; i < 5; ++i) drm_test::addVertex(mesh, float(-2 - i), 0.5f * float(i), 1.0f);
+    EncodeOptions options;
+    options.verify = true;  // decodes the file and compares grid points and oriented faces
+    const Encoded encoded = encode(mesh, options);
+    EXPECT_EQ(encoded.stats.components, 3u);
+    const Decoded decoded = decode(encoded.bytes);
+    ASSERT_EQ(decoded.mesh.triangles.size(), mesh.triangles.size());
+    EXPECT_EQ(decoded.mesh.vertexCount(), mesh.vertexCount());
+}
