@@ -30,26 +30,29 @@ namespace drm {
 // made quadratic by a corrupt file that starts far back each time).
 class StartCursor {
 public:
-    explicit StartCursor(const Traversal& traversal) : traversal_(traversal), jump_(traversal.vertexCount()) {
-        for (size_t v = 0; v < jump_.size(); ++v) jump_[v] = uint32_t(v);
-    }
+    explicit StartCursor(const Traversal& traversal) : traversal_(traversal), n_(uint32_t(traversal.vertexCount())) {}
 
     // The first untouched vertex at or after `from`, cyclically; the vertex
     // count if every vertex is touched.
     uint32_t at(uint32_t from) {
-        const uint32_t n = uint32_t(jump_.size());
         const uint32_t found = firstUntouchedFrom(from);
-        return found < n ? found : firstUntouchedFrom(0);
+        return found < n_ ? found : firstUntouchedFrom(0);
     }
 
 private:
     uint32_t firstUntouchedFrom(uint32_t from) {
-        const uint32_t n = uint32_t(jump_.size());
+        if (from >= n_ || !traversal_.isTouched(from)) return from;
+        // Made at the first touched vertex met: a mesh of one component
+        // never needs the table (4 bytes a vertex).
+        if (jump_.empty()) {
+            jump_.resize(n_);
+            for (uint32_t v = 0; v < n_; ++v) jump_[v] = v;
+        }
         uint32_t r = from;
         // jump_[v] never passes the first untouched vertex from v: it was
         // that vertex once, and vertices are only ever touched, not freed.
-        while (r < n && traversal_.isTouched(r)) r = jump_[r] > r ? jump_[r] : r + 1;
-        for (uint32_t v = from; v < n && v != r;) {
+        while (r < n_ && traversal_.isTouched(r)) r = jump_[r] > r ? jump_[r] : r + 1;
+        for (uint32_t v = from; v < n_ && v != r;) {
             const uint32_t next = jump_[v] > v ? jump_[v] : v + 1;
             jump_[v] = r;
             v = next;
@@ -58,7 +61,8 @@ private:
     }
 
     const Traversal& traversal_;
-    std::vector<uint32_t> jump_;
+    const uint32_t n_;
+    std::vector<uint32_t> jump_;  // empty until needed
 };
 
 // How far past `first` vertex v lies, counting up and wrapping at
