@@ -166,6 +166,7 @@ drm::Encoded encodeArrays(const FloatArray& vertices, const UIntArray& faces, in
         else if (key == "refine_bits") o.refineBits = v.cast<int>();
         else if (key == "keep_vertex_order") o.keepVertexOrder = v.cast<bool>();
         else if (key == "verify") o.verify = v.cast<bool>();
+        else if (key == "search_starts") o.searchStarts = v.cast<bool>();
         else if (key == "normal_bits") o.normalBits = v.cast<int>();
         else if (key == "uv_bits") o.uvBits = v.cast<int>();
         else if (key == "keep") o.attributes = drm::parseAttributes(v.cast<std::string>());

@@ -65,7 +65,7 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 const std::vector<std::string>& encodeOptionNames() {
     static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers",
                                                    "--refine-bits", "--attributes", "--normal-bits", "--uv-bits",
-                                                   "--weld", "--index"};
+                                                   "--weld", "--index", "--start"};
     return names;
 }
 
@@ -124,6 +124,11 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
         }
     } catch (const drm::Error& e) {
         throw UsageError(e.what());
+    }
+    if (args.has("--start")) {
+        const std::string start = args.value("--start");
+        if (start != "search" && start != "smallest") throw UsageError("--start takes search or smallest, not '" + start + "'");
+        options.searchStarts = start == "search";
     }
     if (args.has("--curvature")) {
         const std::string onOff = args.value("--curvature");

@@ -16,7 +16,7 @@ namespace cli {
 const char* const kEncodeHelp =
     "usage: drm encode IN OUT.drm [--bits N] [--predictor P] [--curvature on|off] [--geometry G] [--levers L]\n"
     "                  [--keep-vertex-order] [--attributes LIST|all|none] [--normal-bits N] [--uv-bits N]\n"
-    "                  [--weld auto|on|off] [--index auto|grid|flann] [--verify]\n"
+    "                  [--weld auto|on|off] [--index auto|grid|flann] [--start search|smallest] [--verify]\n"
     "       drm encode INPUTS... -o DIR [-j N] [options as above]\n"
     "\n"
     "Compresses the triangle mesh IN (PLY, OBJ, OFF or STL) into OUT.drm.\n"
@@ -67,6 +67,11 @@ const char* const kEncodeHelp =
     "  --index I         spatial index for the neighbour searches: auto (default:\n"
     "                    the faster per search), grid or flann (FLANN's kd-tree);\n"
     "                    the file is the same byte for byte whichever runs\n"
+    "  --start S         where the traversal starts each component: search (default:\n"
+    "                    meshes under 20000 faces also try three other first\n"
+    "                    vertices and the input's face order, and keep the\n"
+    "                    smallest file) or smallest (each at its smallest vertex,\n"
+    "                    faster)\n"
     "  -o, --output-dir DIR  write DIR/NAME.drm for every input (several inputs, folders)\n"
     "  -j, --jobs N      files encoded at once with -o (default: the number of cores)\n";
 

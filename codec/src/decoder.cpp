@@ -100,7 +100,7 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
     std::vector<uint64_t>& histogram = result.stats.rankHistogram;
 
     const bool startsInStream = d.parts.formatVersion >= kFirstFormatWithStartsInConnectivity;
-    std::unique_ptr<StartCursor> cursor(startsInStream ? new StartCursor(traversal) : nullptr);
+    StartCursor cursor(traversal);  // formats 8 on; costs nothing until a component starts
     const uint64_t n = d.traversalVertices;
     uint32_t lastStart = 0;
     for (size_t c = 0; c < header.componentCount; ++c) {
@@ -109,7 +109,7 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
         try {
             uint32_t start[3];
             if (startsInStream) {
-                const uint32_t from = cursor->at(lastStart);
+                const uint32_t from = cursor.at(lastStart);
                 if (from >= n) throw Error(ErrorKind::Corrupt, "every vertex is taken before it starts");
                 const uint32_t skipped = coder.getStartGap(StartField::Skipped);
                 const uint32_t second = coder.getStartGap(StartField::Second);

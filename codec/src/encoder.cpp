@@ -84,14 +84,15 @@ struct NumberedMesh {
     std::vector<uint32_t> looseTriangles;  // the faces repeating a vertex, decoded indices
 };
 
-// Where the traversal starts its components (start_triangle.h). By default
-// each at its smallest vertex, in increasing order; firstVertex, if given,
-// starts the first component instead. inInputOrder starts each at the first
-// face of the input that no earlier component reached, as formats 1 to 7
-// did (the corpus's CAD meshes often list their faces in an order the
-// traversal likes: teapot's ranks cost 15 % less so).
+// Where the traversal starts its components (start_triangle.h).
+// SmallestVertices: each at its smallest vertex, in increasing order, but
+// for the first component if firstVertex names a vertex in a face.
+// InputFaces: each at the first face of the input that no earlier
+// component reached, as formats 1 to 7 did (the corpus's CAD meshes often
+// list their faces in an order the traversal likes: teapot's ranks cost
+// 15 % less so); firstVertex is not used.
 struct ComponentStarts {
-    bool inInputOrder = false;
+    enum class Order { SmallestVertices, InputFaces } order = Order::SmallestVertices;
     uint32_t firstVertex = kNoVertex;
 };
 
@@ -197,11 +198,12 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
     auto startsAComponent = [&](uint32_t v) {
         return topology.start[v] != topology.start[v + 1] && !traversal.isTouched(v);
     };
-    if (starts.inInputOrder)
+    if (starts.order == ComponentStarts::Order::InputFaces) {
         for (size_t f = 0; f < faceCount; ++f)
             if (!traversal.isTouched(t[3 * f])) codeComponentFrom(t[3 * f], uint32_t(f));
-    if (starts.firstVertex != kNoVertex && startsAComponent(starts.firstVertex))
+    } else if (starts.firstVertex != kNoVertex && startsAComponent(starts.firstVertex)) {
         codeComponentFrom(starts.firstVertex, kNoIndex);
+    }
     for (uint32_t v = 0; v < traversalVertices; ++v)
         if (startsAComponent(v)) codeComponentFrom(v, kNoIndex);
 
@@ -354,10 +356,20 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
     // 380 to 427, bunny's 2071 to 2121. Small meshes try several starts.
     std::vector<ComponentStarts> startsToTry(1);
     const size_t faces = numbered.triangles.size() / 3;
-    if (faces < kTryStartsBelowFaces) {
-        for (size_t k = 1; k < kFirstVerticesTried; ++k)
-            startsToTry.push_back({false, uint32_t(k * numbered.vertexCount / kFirstVerticesTried)});
-        startsToTry.push_back({true, kNoVertex});
+    if (options.searchStarts && faces < kTryStartsBelowFaces) {
+        // First vertices spread over the numbering, each moved on to the
+        // next vertex in a face; none tried twice, nor the default's.
+        const std::vector<uint32_t>& edgesFrom = numbered.topology.start;
+        auto inAFace = [&](size_t v) { return edgesFrom[v] != edgesFrom[v + 1]; };
+        std::vector<uint32_t> tried;
+        for (size_t k = 0; k < kFirstVerticesTried; ++k) {
+            size_t v = k * numbered.vertexCount / kFirstVerticesTried;
+            while (v < numbered.vertexCount && !inAFace(v)) ++v;
+            if (v == numbered.vertexCount || std::find(tried.begin(), tried.end(), uint32_t(v)) != tried.end()) continue;
+            tried.push_back(uint32_t(v));
+            if (k > 0) startsToTry.push_back({ComponentStarts::Order::SmallestVertices, uint32_t(v)});
+        }
+        startsToTry.push_back({ComponentStarts::Order::InputFaces, kNoVertex});
     }
     Attempt best;
     ComponentStarts bestStarts;

@@ -7,8 +7,8 @@
 // is checked against the section's length first:
 //  1. the copies: the decoded index of the vertex each copy stands for, in
 //     non-decreasing order (the encoder numbers copies so), as Elias-gamma
-//     coded differences plus one; their count is in the header, since start
-//     triangles may use copies;
+//     coded differences plus one; their count is in the header, since the
+//     traversal (start triangles too) may use copies;
 //  2. the faces repeating a vertex: a 32-bit count, then three decoded
 //     vertex indices each, in the bits of the largest vertex index;
 //  3. the count of repeated faces (32 bits);

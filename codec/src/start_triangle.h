@@ -4,11 +4,11 @@
 //
 // The first vertex is coded as its distance from a cursor: the first vertex
 // at or after the previous component's first vertex that no decoded
-// triangle holds yet, cyclically. An encoder that starts every component at
-// its smallest vertex, in increasing order, codes distances of 0 (vertices
-// in no face are counted over), since components share no vertex (the
-// traversal codes only manifold meshes); any other start costs the bits of
-// its distance. The other two vertices are coded as their distance past the
+// triangle holds yet, cyclically. Components share no vertex (the traversal
+// codes only manifold meshes), so an encoder that starts every component at
+// its smallest vertex, in increasing order, codes a distance of 0 for each,
+// or the count of vertices in no face that lie between; any other start
+// costs the bits of its distance. The other two vertices are coded as their distance past the
 // first, wrapping at the vertex count: the usual ones, numbered by the
 // geometry soon after the first, cost a few bits instead of three varints.
 #ifndef DRM_START_TRIANGLE_H
@@ -38,6 +38,8 @@ public:
         const uint32_t found = firstUntouchedFrom(from);
         return found < n_ ? found : firstUntouchedFrom(0);
     }
+    // Vertices stepped over so far (the tests' measure of the work done).
+    uint64_t steps() const { return steps_; }
 
 private:
     uint32_t firstUntouchedFrom(uint32_t from) {
@@ -51,7 +53,10 @@ private:
         uint32_t r = from;
         // jump_[v] never passes the first untouched vertex from v: it was
         // that vertex once, and vertices are only ever touched, not freed.
-        while (r < n_ && traversal_.isTouched(r)) r = jump_[r] > r ? jump_[r] : r + 1;
+        while (r < n_ && traversal_.isTouched(r)) {
+            r = jump_[r] > r ? jump_[r] : r + 1;
+            ++steps_;
+        }
         for (uint32_t v = from; v < n_ && v != r;) {
             const uint32_t next = jump_[v] > v ? jump_[v] : v + 1;
             jump_[v] = r;
@@ -63,6 +68,7 @@ private:
     const Traversal& traversal_;
     const uint32_t n_;
     std::vector<uint32_t> jump_;  // empty until needed
+    uint64_t steps_ = 0;
 };
 
 // How far past `first` vertex v lies, counting up and wrapping at

@@ -22,14 +22,16 @@ struct HeaderFields {
     uint64_t vertexCount = 0;
     uint64_t faceCount = 0;
     uint64_t copyCount = 0;               // present only with kRepairsFlag
-    // From format 8 the start triangles are in the connectivity section
-    // (docs/format.md); the header keeps only their count.
-    uint64_t componentCount = 0;
+    uint64_t componentCount = 0;          // written as is, even if it disagrees with startVertices
+    // Formats 1 to 7: 3 per component. From format 8 they are in the
+    // connectivity section (docs/format.md) and the header has only the count.
+    std::vector<uint64_t> startVertices;
 };
 
-// False if payload is not exactly a header as the format describes it.
-bool readHeader(const std::vector<uint8_t>& payload, HeaderFields* h);
-std::vector<uint8_t> writeHeader(const HeaderFields& h);
+// False if payload is not exactly a header of that format version as the
+// format describes it.
+bool readHeader(const std::vector<uint8_t>& payload, HeaderFields* h, int formatVersion = 8);
+std::vector<uint8_t> writeHeader(const HeaderFields& h, int formatVersion = 8);
 
 }  // namespace drm_test
 

@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <string>
@@ -235,6 +237,80 @@ TEST(ChecksummedCorruption, ComponentCountsThatDoNotMatchAreRefused) {
             [&](const drm_test::Sample&, HeaderFields& h) { h.componentCount += uint64_t(delta); },
             [&](const Bytes& b, const std::string& label) { v.refused(b, label, drm::ErrorKind::Corrupt); },
             "component count " + std::to_string(delta));
+}
+
+Bytes fileBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    EXPECT_TRUE(in.good()) << path;
+    return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Formats 1 to 7 kept the start triangles in the header. The decoder
+// still reads them; format 7's golden files, damaged there.
+void forEachFormat7Header(const std::function<void(HeaderFields&)>& change,
+                          const std::function<void(const Bytes&, const std::string&)>& check, const std::string& what) {
+    for (const char* name : {"torus", "nefertiti", "blobby-3cc", "star-raw", "nefertiti-refine", "tray-bottom",
+                             "bunny-lres", "shark-refine"}) {
+        const Bytes file = fileBytes(std::string(DRM_GOLDEN_DIR) + "/v7/" + name + ".drm");
+        std::vector<drm_test::SectionSpan> sections;
+        ASSERT_TRUE(drm_test::parseSections(file, &sections)) << name;
+        HeaderFields h;
+        ASSERT_TRUE(drm_test::readHeader(drm_test::payloadsOf(file, sections)[kHeader], &h, 7)) << name;
+        ASSERT_EQ(h.startVertices.size(), 3 * h.componentCount) << name;
+        change(h);
+        check(drm_test::withPayload(file, kHeader, drm_test::writeHeader(h, 7)), std::string(name) + " (format 7): " + what);
+    }
+}
+
+TEST(ChecksummedCorruption, Format7ImpossibleStartTrianglesAreRefused) {
+    Verdicts v("impossible start triangles in format 7 headers");
+    struct Change {
+        const char* what;
+        std::function<void(HeaderFields&)> apply;
+    };
+    const Change changes[] = {
+        {"first start triangle (a, a, c)", [](HeaderFields& h) { h.startVertices[1] = h.startVertices[0]; }},
+        {"first start triangle (a, b, a)", [](HeaderFields& h) { h.startVertices[2] = h.startVertices[0]; }},
+        {"a start vertex = the vertex count", [](HeaderFields& h) { h.startVertices[0] = h.vertexCount; }},
+        {"a start vertex = 2^32", [](HeaderFields& h) { h.startVertices[0] = uint64_t(1) << 32; }},
+        {"a start vertex = 2^64 - 1", [](HeaderFields& h) { h.startVertices[0] = UINT64_MAX; }},
+        {"the last start triangle reuses the first one's vertex",
+         [](HeaderFields& h) {
+             if (h.componentCount > 1) h.startVertices[h.startVertices.size() - 1] = h.startVertices[0];
+             else h.startVertices[1] = h.startVertices[0];
+         }},
+        {"the first start triangle twice",
+         [](HeaderFields& h) {
+             ++h.componentCount;
+             h.startVertices.insert(h.startVertices.end(), h.startVertices.begin(), h.startVertices.begin() + 3);
+         }},
+        {"a component count that disagrees with the start triangles", [](HeaderFields& h) { ++h.componentCount; }},
+        {"the last component dropped",
+         [](HeaderFields& h) {
+             --h.componentCount;
+             h.startVertices.resize(h.startVertices.size() - 3);
+         }},
+    };
+    for (const Change& c : changes)
+        forEachFormat7Header(c.apply, [&](const Bytes& b, const std::string& label) { v.refused(b, label, drm::ErrorKind::Corrupt); },
+                             c.what);
+}
+
+TEST(ChecksummedCorruption, Format7ReorderedStartTrianglesAreRefusedOrSound) {
+    // Valid triangles of the mesh, but entered from another edge or turned
+    // over: the ranks then describe another traversal.
+    Verdicts v("format 7 start triangles rotated or flipped");
+    forEachFormat7Header([](HeaderFields& h) { std::swap(h.startVertices[1], h.startVertices[2]); },
+                         [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, "first start flipped");
+    forEachFormat7Header(
+        [](HeaderFields& h) { std::rotate(h.startVertices.begin(), h.startVertices.begin() + 1, h.startVertices.begin() + 3); },
+        [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, "first start rotated");
+    forEachFormat7Header(
+        [](HeaderFields& h) {
+            if (h.componentCount > 1)
+                std::swap_ranges(h.startVertices.begin(), h.startVertices.begin() + 3, h.startVertices.end() - 3);
+        },
+        [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, "first and last component swapped");
 }
 
 TEST(ChecksummedCorruption, OutOfRangeHeaderFieldsAreRefused) {
