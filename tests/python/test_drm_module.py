@@ -168,6 +168,17 @@ def test_keep_vertex_order_gives_input_indices():
     assert canonical(out_faces) == canonical(faces)
 
 
+def test_search_starts_never_gives_a_larger_file():
+    # tray-bottom: CAD slivers, where the start search finds a smaller file.
+    vertices, faces = read_ply(os.path.join(DATA, "tray-bottom.ply"))
+    searched = drm.encode(vertices, faces)
+    smallest = drm.encode(vertices, faces, search_starts=False)
+    assert len(searched) < len(smallest)
+    for data in (searched, smallest):
+        out_vertices, out_faces = drm.decode(data)
+        assert len(out_faces) == len(faces) and len(out_vertices) == len(vertices)
+
+
 def test_attributes_come_back():
     vertices, faces = small_mesh()
     colors = np.arange(24, dtype=np.uint8).reshape(6, 4)
