@@ -52,6 +52,19 @@ std::vector<AdaptiveFrequencies> startLengthModels() {
                                             AdaptiveFrequencies(std::vector<uint16_t>(kMaxStartGapBits, 1)));
 }
 
+// w >= 1 as its bit length (a symbol of `lengths`, coded as length - 1)
+// and the bits below its leading one: escaped ranks and start gaps alike.
+void encodeExpGolomb(RangeEncoder& coder, AdaptiveFrequencies& lengths, uint64_t w) {
+    const int length = bitLength(w);
+    lengths.encode(coder, uint32_t(length - 1));
+    coder.encodeWideBits(w, length - 1);
+}
+
+uint64_t decodeExpGolomb(RangeDecoder& coder, AdaptiveFrequencies& lengths) {
+    const int length = int(lengths.decode(coder)) + 1;
+    return (uint64_t(1) << (length - 1)) | coder.decodeWideBits(length - 1);
+}
+
 int rankClass(uint32_t rank) { return rank == 1 ? 1 : rank == 2 ? 2 : 0; }
 constexpr int kRankClasses = 3;
 
@@ -139,17 +152,11 @@ void RankEncoder::put(uint32_t rank, int extraContext) {
     ranks_.observed(previousClass_, symbol);
     previousClass_ = rankClass(rank);
     if (rank < kRankDirectSymbols) return;
-    const uint64_t w = uint64_t(rank) - kRankDirectSymbols + 1;
-    const int length = bitLength(w);
-    escapeLengths_.encode(coder_, uint32_t(length - 1));
-    coder_.encodeWideBits(w, length - 1);  // the bits below the leading one
+    encodeExpGolomb(coder_, escapeLengths_, uint64_t(rank) - kRankDirectSymbols + 1);
 }
 
 void RankEncoder::putStartGap(StartField field, uint32_t gap) {
-    const uint64_t w = uint64_t(gap) + 1;
-    const int length = bitLength(w);
-    startLengths_[size_t(field)].encode(coder_, uint32_t(length - 1));
-    coder_.encodeWideBits(w, length - 1);
+    encodeExpGolomb(coder_, startLengths_[size_t(field)], uint64_t(gap) + 1);
 }
 
 std::vector<uint8_t> RankEncoder::finish() { return coder_.finish(); }
@@ -159,8 +166,7 @@ RankDecoder::RankDecoder(const uint8_t* data, size_t size, int extraContexts)
       startLengths_(startLengthModels()) {}
 
 uint32_t RankDecoder::getStartGap(StartField field) {
-    const int length = int(startLengths_[size_t(field)].decode(coder_)) + 1;
-    const uint64_t w = (uint64_t(1) << (length - 1)) | coder_.decodeWideBits(length - 1);
+    const uint64_t w = decodeExpGolomb(coder_, startLengths_[size_t(field)]);
     if (w - 1 > UINT32_MAX)
         throw Error(ErrorKind::Corrupt, "corrupt connectivity stream: a start triangle's gap does not fit in 32 bits");
     return uint32_t(w - 1);
@@ -171,8 +177,7 @@ uint32_t RankDecoder::get(int extraContext) {
     uint32_t rank = model.decode(coder_);
     ranks_.observed(previousClass_, rank);
     if (rank == kEscape) {
-        const int length = int(escapeLengths_.decode(coder_)) + 1;
-        const uint64_t w = (uint64_t(1) << (length - 1)) | coder_.decodeWideBits(length - 1);
+        const uint64_t w = decodeExpGolomb(coder_, escapeLengths_);
         const uint64_t wide = w - 1 + kRankDirectSymbols;
         if (wide > UINT32_MAX)
             throw Error(ErrorKind::Corrupt, "corrupt connectivity stream: an escaped rank does not fit in 32 bits");

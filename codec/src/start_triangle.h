@@ -8,9 +8,10 @@
 // codes only manifold meshes), so an encoder that starts every component at
 // its smallest vertex, in increasing order, codes a distance of 0 for each,
 // or the count of vertices in no face that lie between; any other start
-// costs the bits of its distance. The other two vertices are coded as their distance past the
-// first, wrapping at the vertex count: the usual ones, numbered by the
-// geometry soon after the first, cost a few bits instead of three varints.
+// costs the bits of its distance. The other two vertices are coded as their
+// distance past the first, wrapping at the vertex count: the usual ones,
+// numbered by the geometry soon after the first, cost a few bits instead of
+// three varints.
 #ifndef DRM_START_TRIANGLE_H
 #define DRM_START_TRIANGLE_H
 
