@@ -868,7 +868,12 @@ std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const st
 // the sections' sizes at the same fraction of the way would compare
 // different vertices and could not tell igea from crank. Small meshes are
 // left out: they cost little either way, and there the spanning tree can
-// win after trailing by 10 % (teapot).
+// win after trailing by 10 % (teapot). The first sixteenth is left out of
+// both sums: it is mostly the models learning, and it held a spanning tree
+// that wins by half against what it would win later (a regular lattice of
+// 20,000 points: 1.83 times the cheapest-first tree's bits over its first
+// sixteenth, 1.48 over two, 0.51 at the end; octopus coded with one symbol
+// per choice, 1.021 over two, 0.987 at the end).
 constexpr size_t kSteps = 16;
 constexpr double kAbandonOverRival = 1.015;
 constexpr size_t kAbandonFromStep = 4;
@@ -904,7 +909,7 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
     s.childCountOf.reserve(n);
     TreeWalk walk;
     const size_t step = (n + kSteps - 1) / kSteps;
-    const double start = coder.bitsSoFar();
+    double start = coder.bitsSoFar();
     double rivalSpent = 0;
     for (uint32_t self = 0; self < n; ++self) {
         const uint32_t vertex = order[self];
@@ -924,6 +929,10 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
         if ((self + 1) % step != 0) continue;
         if (coder.bytesAtLeast() > rivalSize) return {};
         const size_t stepsDone = (self + 1) / step;
+        if (stepsDone == 1) {
+            start = coder.bitsSoFar();
+            rivalSpent = 0;
+        }
         const double over = stepsDone >= kAbandonFromStep        ? kAbandonOverRival
                             : stepsDone >= kAbandonEarlyFromStep ? kAbandonEarlyOverRival
                                                                  : 0.0;
