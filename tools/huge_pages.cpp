@@ -13,8 +13,8 @@
 // Measured in docs/speed.md ("Huge pages").
 //
 // When a block of kAdviseFrom bytes or more is allocated, the advice covers
-// its 2 MiB pages and, when it lies in the main heap, every page from it up
-// to the heap's end: the heap grows by main.cpp's M_TOP_PAD at a time, and
+// the 2 MiB pages it lies in and, when it lies in the main heap, every page
+// from it up to the heap's end: the heap grows by main.cpp's M_TOP_PAD at a time, and
 // the smaller blocks carved from that pad later (vectors of vectors, the
 // coders' tables) are advised too. Advice is a hint on the address range:
 // it changes no data, so the other allocations sharing those pages are
@@ -60,7 +60,8 @@ void adviseHugePages(void*, std::size_t) {}
 
 }  // namespace
 
-// The other forms (arrays, nothrow) call this one in libstdc++.
+// The other forms but the aligned ones (arrays, nothrow) call this one in
+// libstdc++.
 void* operator new(std::size_t size) {
     if (size == 0) size = 1;
     void* block;
