@@ -167,6 +167,7 @@ drm::Encoded encodeArrays(const FloatArray& vertices, const UIntArray& faces, in
         else if (key == "keep_vertex_order") o.keepVertexOrder = v.cast<bool>();
         else if (key == "verify") o.verify = v.cast<bool>();
         else if (key == "search_starts") o.searchStarts = v.cast<bool>();
+        else if (key == "threads") o.threads = v.cast<int>();
         else if (key == "normal_bits") o.normalBits = v.cast<int>();
         else if (key == "uv_bits") o.uvBits = v.cast<int>();
         else if (key == "keep") o.attributes = drm::parseAttributes(v.cast<std::string>());
@@ -235,7 +236,8 @@ PYBIND11_MODULE(drm, m) {
         py::arg("vertices"), py::arg("faces"), py::arg("bits") = drm::kDefaultQuantizationBits,
         "encode(vertices (n, 3) float, faces (m, 3) uint32, bits=12, **options) -> bytes\n"
         "options: predictor, geometry, levers, curvature, refine_bits, keep_vertex_order, verify,\n"
-        "normal_bits, uv_bits, weld ('auto', 'on', 'off'), keep (attribute list), attributes (dict of arrays).");
+        "normal_bits, uv_bits, weld ('auto', 'on', 'off'), search_starts, threads (1 or 2, default: 2 on\n"
+        "a machine of several cores; never changes the bytes), keep (attribute list), attributes (dict of arrays).");
     m.def(
         "encode_full",
         [](const FloatArray& vertices, const UIntArray& faces, int bits, const py::kwargs& options) {

@@ -65,7 +65,7 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 const std::vector<std::string>& encodeOptionNames() {
     static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers",
                                                    "--refine-bits", "--attributes", "--normal-bits", "--uv-bits",
-                                                   "--weld", "--index", "--start"};
+                                                   "--weld", "--index", "--start", "--threads"};
     return names;
 }
 
@@ -129,6 +129,10 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
         const std::string start = args.value("--start");
         if (start != "search" && start != "smallest") throw UsageError("--start takes search or smallest, not '" + start + "'");
         options.searchStarts = start == "search";
+    }
+    if (args.has("--threads")) {
+        options.threads = wholeNumber(args, "--threads");
+        if (options.threads < 1 || options.threads > 2) throw UsageError("--threads takes 1 or 2");
     }
     if (args.has("--curvature")) {
         const std::string onOff = args.value("--curvature");

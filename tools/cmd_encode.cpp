@@ -7,6 +7,7 @@
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -72,6 +73,10 @@ const char* const kEncodeHelp =
     "                    vertices and the input's face order, and keep the\n"
     "                    smallest file) or smallest (each at its smallest vertex,\n"
     "                    faster)\n"
+    "  --threads N       threads for one mesh: 1, or 2 (the default where the machine\n"
+    "                    has several cores: the vertex coder beside the mesh checks,\n"
+    "                    refine's estimates beside the tree's attempt); with -o and\n"
+    "                    more than one job, each file takes one; never changes the file\n"
     "  -o, --output-dir DIR  write DIR/NAME.drm for every input (several inputs, folders)\n"
     "  -j, --jobs N      files encoded at once with -o (default: the number of cores)\n";
 
@@ -115,10 +120,13 @@ int encodeMany(const Arguments& parsed, const drm::EncodeOptions& options) {
     const std::vector<std::string> outputs = outputPaths(inputs, dir, ".drm");
     std::vector<BatchFile> files;
     for (size_t i = 0; i < inputs.size(); ++i) files.push_back({inputs[i], outputs[i], fileBytes(inputs[i])});
+    // Files already share the cores: each encodes on its own worker alone.
+    drm::EncodeOptions perFile = options;
+    if (std::min<size_t>(size_t(jobs), files.size()) > 1) perFile.threads = 1;
     runBatch({"encoded", "bytes out", false}, files, jobs, [&](const BatchFile& file) {
         FileOutcome outcome;
         try {
-            const EncodedFile encoded = encodeFile(file.input, file.output, options, nullptr);
+            const EncodedFile encoded = encodeFile(file.input, file.output, perFile, nullptr);
             outcome.ok = true;
             outcome.line = encoded.line;
             outcome.notes = encoded.notes;

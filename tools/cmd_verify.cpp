@@ -7,6 +7,7 @@
 
 #include <drm_vcg/mesh_io.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -91,10 +92,12 @@ int runVerify(const std::vector<std::string>& args) {
                           ".ply, .obj, .off or .stl files");
         std::vector<BatchFile> files;
         for (const std::string& input : inputs) files.push_back({input, "", fileBytes(input)});
+        drm::EncodeOptions perFile = options;  // files already share the cores
+        if (std::min<size_t>(size_t(jobs), files.size()) > 1) perFile.threads = 1;
         runBatch({"verified lossless", "bytes encoded", false}, files, jobs, [&](const BatchFile& file) {
             FileOutcome outcome;
             try {
-                const VerifiedFile verified = verifyFile(file.input, options, nullptr);
+                const VerifiedFile verified = verifyFile(file.input, perFile, nullptr);
                 outcome.ok = true;
                 outcome.line = verified.line;
                 outcome.notes = verified.notes;

@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <future>
 #include <string>
+#include <thread>
 
 #include "encoder.h"
 #include "file_format.h"
@@ -262,31 +265,60 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
     return attempt;
 }
 
+// Whether the encoder may run independent parts of its work on a second
+// thread (EncodeOptions::threads). The file is the same either way.
+bool secondThreadAllowed(const EncodeOptions& options) {
+    return options.threads >= 2 || (options.threads == 0 && std::thread::hardware_concurrency() > 1);
+}
+int threadsFor(const EncodeOptions& options) { return secondThreadAllowed(options) ? 2 : 1; }
+
+// The vertex section of one attempt: the coder asked for, or its fallback
+// where that is no larger.
+struct VertexSection {
+    const GeometryCoderEntry* coder = nullptr;
+    GeometryEncoding encoding;
+};
+
+// `asked` is Refine exactly when lowBits > 0 (encodeConnectivity).
+// `trials` (may be null): what an earlier call worked out on the same grid
+// (refineGeometryEstimate's trees).
+VertexSection codeVertexSection(const std::vector<int32_t>& quantized, const EncodeOptions& options,
+                                GeometryCoder asked, int lowBits, GeometryTreeTrials* trials) {
+    const std::vector<int32_t> coarse = lowBits > 0 ? coarsenGrid(quantized, lowBits) : std::vector<int32_t>();
+    const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : quantized;
+    VertexSection section;
+    section.coder = geometryCoderOf(asked);
+    section.encoding = section.coder->encode(vertexGrid, options.bits - lowBits, options.index, trials, threadsFor(options));
+    if (const GeometryCoderEntry* fallback = section.coder->fallback) {
+        // Scattered points (a soup of random triangles) predict no better
+        // than raw bits: keep whichever section is smaller (the fallback's
+        // on a tie).
+        GeometryEncoding alternative = fallback->encode(vertexGrid, options.bits - lowBits, options.index, nullptr, 1);
+        if (alternative.bytes.size() <= section.encoding.bytes.size()) {
+            section.coder = fallback;
+            section.encoding = std::move(alternative);
+        }
+    }
+    return section;
+}
+
 // Codes the vertex set with the given coder (lowBits > 0: Refine), numbers
 // the cut mesh in its decoded order and encodes the connectivity.
 // `trials` (may be null): what an earlier call worked out on the same grid
-// (refineGeometryEstimate's trees).
+// (refineGeometryEstimate's trees). `given` (may be null): the vertex
+// section already coded for this attempt (codeVertexSection), taken.
 Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
                            const EncodeOptions& options, int lowBits, ProgressReporter& progress,
-                           GeometryTreeTrials* trials = nullptr) {
+                           GeometryTreeTrials* trials = nullptr, VertexSection* given = nullptr) {
     progress.stage("coding vertices", 0.01);
     NumberedMesh numbered;
     numbered.lowBits = lowBits;
     std::vector<int32_t> coarse = lowBits > 0 ? coarsenGrid(prepared.quantized, lowBits) : std::vector<int32_t>();
     const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : prepared.quantized;
-    // options.geometry is Refine exactly when lowBits > 0 (encodeConnectivity).
-    const GeometryCoderEntry* coder = geometryCoderOf(options.geometry);
-    GeometryEncoding encoding = coder->encode(vertexGrid, options.bits - lowBits, options.index, trials);
-    if (const GeometryCoderEntry* fallback = coder->fallback) {
-        // Scattered points (a soup of random triangles) predict no better
-        // than raw bits: keep whichever section is smaller (the fallback's
-        // on a tie).
-        GeometryEncoding alternative = fallback->encode(vertexGrid, options.bits - lowBits, options.index, nullptr);
-        if (alternative.bytes.size() <= encoding.bytes.size()) {
-            coder = fallback;
-            encoding = std::move(alternative);
-        }
-    }
+    VertexSection section =
+        given ? std::move(*given) : codeVertexSection(prepared.quantized, options, options.geometry, lowBits, trials);
+    const GeometryCoderEntry* coder = section.coder;
+    GeometryEncoding& encoding = section.encoding;
     numbered.geometryCoder = coder->id;
     numbered.geometry = std::move(encoding.bytes);
     numbered.order = std::move(encoding.order);
@@ -460,34 +492,69 @@ size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::
     return refinement.overBudget ? SIZE_MAX : tree.bytes.size() + refinement.bytes.size();
 }
 
+// `section`: the tree's vertex section on the full grid when the caller
+// has coded it already (encodeConnectivity), else coded here.
 Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
-                                 const EncodeOptions& options, ProgressReporter& progress) {
+                                 const EncodeOptions& options, ProgressReporter& progress, VertexSection section) {
     EncodeOptions tree = options;
     tree.geometry = GeometryCoder::SpanningTree;
-    Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
-    const double treeBits = 8.0 * double(best.geometry.size()) / double(std::max<size_t>(1, mesh.vertexCount()));
-    if (treeBits <= kAutoRefineAboveBitsPerVertex) return best;
-    const size_t treeGeometry = best.geometry.size(), treeTotal = best.encoded.bytes.size();
+    if (!section.coder) section = codeVertexSection(prepared.quantized, tree, tree.geometry, 0, nullptr);
+    const size_t treeGeometry = section.encoding.bytes.size();
+    const double treeBits = 8.0 * double(treeGeometry) / double(std::max<size_t>(1, mesh.vertexCount()));
+    if (treeBits <= kAutoRefineAboveBitsPerVertex)
+        return encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section);
+    const double slack = kRefineEstimateSlack * double(treeGeometry);
+    // Refine's estimates (refineGeometryEstimate), one per low-bit count:
+    // they need the tree's vertex section only, not its attempt, so they
+    // may run beside it.
+    struct Estimate {
+        int lowBits = 0;
+        GeometryTreeTrials trials;
+        size_t bytes = SIZE_MAX;
+    };
+    std::vector<Estimate> estimates;
+    for (int lowBits : kAutoRefineLowBits)
+        if (lowBits < options.bits) {
+            estimates.emplace_back();
+            estimates.back().lowBits = lowBits;
+        }
+    // The connectivity only grows on a coarser grid (more near ties), so
+    // refine can win only where its vertex bits alone save the gain asked
+    // of it: the estimate spares the whole attempt elsewhere (venus,
+    // casting, anchor). It stops as soon as it must exceed skipAbove.
+    auto estimate = [&](Estimate& e, double treeTotal) {
+        const double skipAbove = double(treeGeometry) + slack - kRefineMinimumGain * treeTotal;
+        e.bytes = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, e.lowBits, options.index,
+                                         e.trials, skipAbove);
+    };
+    std::vector<std::future<void>> estimating;
+    if (secondThreadAllowed(options)) {
+        // Beside the attempt, whose total is not known yet, the estimates
+        // stop at the looser bound a file no larger than its vertex section
+        // gives: one stopped there would stop at the attempt's bound too,
+        // and one not stopped gives the same figure, which the test below
+        // holds to the attempt's bound. The files are the same. Each on a
+        // thread of its own: together they take about twice the attempt's
+        // time (venus), so on two cores the three end sooner than the
+        // estimates one after the other beside it.
+        for (Estimate& e : estimates)
+            estimating.push_back(std::async(std::launch::async, estimate, std::ref(e), double(treeGeometry)));
+    }
+    Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section);
+    const size_t treeTotal = best.encoded.bytes.size();
+    for (std::future<void>& running : estimating) running.get();
+    if (estimating.empty())
+        for (Estimate& e : estimates) estimate(e, double(treeTotal));
     const double worthIt = (1.0 - kRefineMinimumGain) * double(treeTotal);
     EncodeOptions refine = options;
     refine.geometry = GeometryCoder::Refine;
-    for (int lowBits : kAutoRefineLowBits) {
-        if (lowBits >= options.bits) continue;
-        // The connectivity only grows on a coarser grid (more near ties),
-        // so refine can win only where its vertex bits alone save the gain
-        // asked of it: the estimate spares the whole attempt elsewhere
-        // (venus, casting, anchor).
-        GeometryTreeTrials trials;
-        const double slack = kRefineEstimateSlack * double(treeGeometry);
-        const double skipAbove = double(treeGeometry) + slack - kRefineMinimumGain * double(treeTotal);
-        const size_t estimate = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, lowBits,
-                                                       options.index, trials, skipAbove);
-        if (estimate == SIZE_MAX) continue;
-        const double growth = trials.nearest && trials.nearest->spacing <= kCrowdedCoarseSpacing
+    for (Estimate& e : estimates) {
+        if (e.bytes == SIZE_MAX) continue;
+        const double growth = e.trials.nearest && e.trials.nearest->spacing <= kCrowdedCoarseSpacing
                                   ? kCrowdedConnectivityGrowth * double(mesh.vertexCount()) / 8.0
                                   : 0.0;
-        if (double(treeGeometry) + slack - double(estimate) - growth < kRefineMinimumGain * double(treeTotal)) continue;
-        Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, lowBits, progress, &trials);
+        if (double(treeGeometry) + slack - double(e.bytes) - growth < kRefineMinimumGain * double(treeTotal)) continue;
+        Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, e.lowBits, progress, &e.trials);
         if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
             best = std::move(refined);
     }
@@ -513,6 +580,31 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     }
     progress.stage("checking mesh", 0.0);
     checkIndices(mesh);  // refuses with messages in the input's own indices
+    if (options.geometry != GeometryCoder::Auto && !geometryCoderOf(options.geometry))
+        throw Error(ErrorKind::InvalidInput, "unknown geometry coder " + std::to_string(int(options.geometry)));
+    if (options.predictor != Predictor::Auto && options.predictor != Predictor::Parallelogram &&
+        options.predictor != Predictor::Midpoint)
+        throw Error(ErrorKind::InvalidInput, "unknown predictor " + std::to_string(int(options.predictor)));
+    if (options.geometry == GeometryCoder::Refine &&
+        (options.refineBits < 0 || options.refineBits > std::min(kMaxRefineBits, options.bits - 1)))
+        throw Error(ErrorKind::InvalidInput, "refinement bits " + std::to_string(options.refineBits) + " out of range 0.." +
+                    std::to_string(std::min(kMaxRefineBits, options.bits - 1)) + " at " +
+                    std::to_string(options.bits) + " bits");
+    if (options.threads < 0)
+        throw Error(ErrorKind::InvalidInput, "threads " + std::to_string(options.threads) + " is negative (0: as the machine allows)");
+    // The first attempt's vertex section needs the quantized grid alone:
+    // with a second thread it is coded there while this one checks the
+    // mesh's topology and cuts it (igea: 4 % of the encoding).
+    const bool treeFirst = options.geometry == GeometryCoder::Auto || options.geometry == GeometryCoder::SpanningTree ||
+                           (options.geometry == GeometryCoder::Refine && options.refineBits == 0);
+    const GeometryCoder firstCoder = treeFirst ? GeometryCoder::SpanningTree : options.geometry;
+    const int firstLowBits = options.geometry == GeometryCoder::Refine ? options.refineBits : 0;
+    VertexSection firstSection;
+    std::future<VertexSection> firstSectionCoding;
+    if (secondThreadAllowed(options))
+        firstSectionCoding = std::async(std::launch::async, [&] {
+            return codeVertexSection(prepared.quantized, options, firstCoder, firstLowBits, nullptr);
+        });
     // A mesh the traversal can take as it is needs no cut (the common case,
     // and the cheap test); any other is cut into manifold pieces.
     ManifoldCut cut;
@@ -541,29 +633,20 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     prepared.repairs.duplicateOf = std::move(cut.duplicateOf);
     prepared.repairs.duplicateReversed = std::move(cut.duplicateReversed);
 
-    if (options.geometry != GeometryCoder::Auto && !geometryCoderOf(options.geometry))
-        throw Error(ErrorKind::InvalidInput, "unknown geometry coder " + std::to_string(int(options.geometry)));
-    if (options.predictor != Predictor::Auto && options.predictor != Predictor::Parallelogram &&
-        options.predictor != Predictor::Midpoint)
-        throw Error(ErrorKind::InvalidInput, "unknown predictor " + std::to_string(int(options.predictor)));
-    if (options.geometry == GeometryCoder::Refine &&
-        (options.refineBits < 0 || options.refineBits > std::min(kMaxRefineBits, options.bits - 1)))
-        throw Error(ErrorKind::InvalidInput, "refinement bits " + std::to_string(options.refineBits) + " out of range 0.." +
-                    std::to_string(std::min(kMaxRefineBits, options.bits - 1)) + " at " +
-                    std::to_string(options.bits) + " bits");
+    if (firstSectionCoding.valid()) firstSection = firstSectionCoding.get();
+    VertexSection* given = firstSection.coder ? &firstSection : nullptr;
     Attempt best;
     if (options.geometry == GeometryCoder::Auto) {
-        best = encodeWithChosenGeometry(mesh, prepared, cut, options, progress);
+        best = encodeWithChosenGeometry(mesh, prepared, cut, options, progress, std::move(firstSection));
     } else if (options.geometry != GeometryCoder::Refine || options.refineBits > 0) {
-        best = encodeWithGeometry(mesh, prepared, cut, options,
-                                  options.geometry == GeometryCoder::Refine ? options.refineBits : 0, progress);
+        best = encodeWithGeometry(mesh, prepared, cut, options, firstLowBits, progress, nullptr, given);
     } else {
         // Refine with the low bits left to the encoder: the spanning tree alone,
         // and 1 .. kMaxTriedRefineBits low bits (the sizes are not unimodal in
         // the low bits: plane-holes grows at 1 and 2, shrinks at 3 to 5).
         EncodeOptions tree = options;
         tree.geometry = GeometryCoder::SpanningTree;
-        best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress);
+        best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, given);
         for (int lowBits = 1; lowBits <= std::min(kMaxTriedRefineBits, options.bits - 1); ++lowBits) {
             Attempt refined = encodeWithGeometry(mesh, prepared, cut, options, lowBits, progress);
             if (refined.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(refined);

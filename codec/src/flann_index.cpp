@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include <flann/algorithms/dist.h>
 #include <flann/algorithms/kdtree_single_index.h>
@@ -75,7 +74,8 @@ public:
         visit(near_.data(), nearPoints_.data(), near_.size());
     }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
-    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) const override;
+    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+                       int threads) const override;
 
 private:
     // The float query for fixed-point p (relative to the origin), and how far
@@ -217,10 +217,11 @@ void FlannIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) 
     tree_->findNeighbors(result, fq, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0.0f, false));
 }
 
-// FLANN's batch search over every vertex, spread over the cores (OpenMP),
+// FLANN's batch search over every vertex, spread over `threads` (OpenMP),
 // then each answer certified as above; the few that are not are asked
 // again one by one with a growing k.
-void FlannIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) const {
+void FlannIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+                               int threads) const {
     const size_t n = grid_.size() / 3;
     neighbours.assign(n * count, kNoVertex);
     distance2.assign(n * count, 0);
@@ -231,7 +232,7 @@ void FlannIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, 
     flann::Matrix<size_t> indices(indexData.data(), n, k);
     flann::Matrix<float> distances(distanceData.data(), n, k);
     flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, true);
-    params.cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    params.cores = std::max(1, threads);
     tree_->knnSearch(flann::Matrix<float>(const_cast<float*>(points_.data()), n, 3), indices, distances, k, params);
     std::vector<RankedVertex> found;
     for (size_t v = 0; v < n; ++v) {

@@ -6,7 +6,7 @@ namespace drm {
 namespace {
 
 // Raw: every coordinate in `bits` bits; the decoded order is the input's.
-GeometryEncoding encodeRaw(const std::vector<int32_t>& grid, int bits, NeighbourIndex, GeometryTreeTrials*) {
+GeometryEncoding encodeRaw(const std::vector<int32_t>& grid, int bits, NeighbourIndex, GeometryTreeTrials*, int) {
     GeometryEncoding out;
     out.bytes = packGrid(grid, bits);
     out.order.resize(grid.size() / 3);
@@ -29,17 +29,18 @@ VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int 
 // casting, mountain); a large mesh would take four times as long.
 constexpr size_t kEveryTreeCodingUpTo = 32768;
 GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
-                            GeometryTreeTrials* trials) {
+                            GeometryTreeTrials* trials, int threads) {
     const bool small = grid.size() / 3 <= kEveryTreeCodingUpTo;
     return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, small ? ChoiceCoding::Smaller : ChoiceCoding::Flags,
-                              small ? FrameUse::Smaller : FrameUse::On, trials);
+                              small ? FrameUse::Smaller : FrameUse::On, trials, threads);
 }
 // Refine's coarse grid: candidates pile up on it, and a tree grown and
 // coded with one symbol per choice often wins (dinosaur-24k 14.05 -> 13.67
 // bits per vertex): both are tried.
 GeometryEncoding encodeRefineCoarse(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
-                                    GeometryTreeTrials* trials) {
-    return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::On, trials);
+                                    GeometryTreeTrials* trials, int threads) {
+    return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::On, trials,
+                              threads);
 }
 VertexSet decodeTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
     VertexSet out;

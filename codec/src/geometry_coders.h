@@ -37,7 +37,7 @@ struct GeometryCoderEntry {
     // `trials` (may be null) carries a tree coder's work on the same grid
     // from one call to the next (GeometryTreeTrials).
     GeometryEncoding (*encode)(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
-                               GeometryTreeTrials* trials);
+                               GeometryTreeTrials* trials, int threads);
     // The coder whose section the encoder keeps instead when it is no larger
     // (scattered points predict no better than raw bits), or nullptr.
     const GeometryCoderEntry* fallback;

@@ -58,13 +58,14 @@ struct GeometryTreeTrials {
 // flags, then one symbol; within each, the frame on, then off; within
 // each, the cheapest-first tree, then the spanning tree). `trials`, when
 // given, holds what earlier calls on the same grid worked out, and gets
-// what this one works out.
+// what this one works out. With `threads` 2 or more, the neighbour graph and
+// the spanning forest use a second thread (the section is the same).
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     NeighbourIndex index = NeighbourIndex::Auto,
                                     GeometryTree tree = GeometryTree::Smaller,
                                     ChoiceCoding choices = ChoiceCoding::Smaller,
                                     FrameUse frames = FrameUse::Smaller,
-                                    GeometryTreeTrials* trials = nullptr);
+                                    GeometryTreeTrials* trials = nullptr, int threads = 1);
 
 // Reads a section in the syntax of format version formatVersion (1 to
 // kFileFormatVersion; the section changed in versions 2, 3, 6 and 7:

@@ -20,7 +20,7 @@ uint64_t residualCost(GridPoint r) {  // Exp-Golomb length, to pick the predicto
 
 }  // namespace
 
-NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourIndex index, int k) {
+NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourIndex index, int k, int threads) {
     const size_t n = grid.size() / 3;
     NearestNeighbours result;
     result.k = k;
@@ -31,7 +31,8 @@ NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourI
     }
     // Exactly, on the integer grid (either index gives the same graph).
     std::vector<int64_t> distance2;
-    makeSpatialIndex(grid, index, IndexRole::NeighbourGraph)->nearestOfEach(size_t(k), result.neighbours, distance2);
+    makeSpatialIndex(grid, index, IndexRole::NeighbourGraph)->nearestOfEach(size_t(k), result.neighbours, distance2,
+                                                                                  threads);
     std::vector<int64_t> fourth(n, 0);  // squared distance to the kNearest-th nearest, fixed point
     for (size_t v = 0; v < n; ++v) {
         size_t found = 0;

@@ -23,7 +23,7 @@ struct NearestNeighbours {
     std::vector<uint32_t> neighbours;  // k per vertex
     double spacing = 1;
 };
-NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourIndex index, int k);
+NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourIndex index, int k, int threads = 1);
 
 // The symmetric count-nearest-neighbour graph (v and w joined when either
 // is among the other's `count` nearest; count <= nearest.k), compressed rows: the neighbours of v are

@@ -37,7 +37,8 @@ public:
         cells_.forEachNear(q, radius, visit);
     }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
-    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2) const override;
+    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+                       int threads) const override;
 
 private:
     static constexpr size_t kFewNearest = 8;  // kept in a sorted list; more are sorted at the end
@@ -60,14 +61,14 @@ void GridIndex::nearest(const FixedPoint& p, size_t count, VertexFilter accept, 
 // Every vertex at once by cells (all_nearest.h), then the vertices that
 // pass leaves uncertain one by one: the same answers (igea's 8-nearest
 // graph 806 M -> 565 M instructions, horse 293 M -> 185 M).
-void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours,
-                              std::vector<int64_t>& distance2) const {
+void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+                              int threads) const {
     const size_t n = grid_.size() / 3;
     neighbours.assign(n * count, kNoVertex);
     distance2.assign(n * count, 0);
     std::vector<uint32_t> uncertain;
     if (cells_.presentCount() == n) {
-        uncertain = nearestOfEachByCells(grid_, count, -1, neighbours, distance2);
+        uncertain = nearestOfEachByCells(grid_, count, -1, neighbours, distance2, threads);
         for (int64_t& d2 : distance2) d2 *= kSubUnits * kSubUnits;  // to fixed point, as nearest() gives them
     } else {
         uncertain.resize(n);

@@ -98,9 +98,10 @@ public:
     // For every vertex v of the grid, the `count` present vertices other
     // than v nearest it, exactly as nearest() would give them:
     // neighbours[v * count + j] (kNoVertex past the last) and their
-    // fixedDistance2 from v in distance2[v * count + j]. May use every core.
+    // fixedDistance2 from v in distance2[v * count + j]. Uses up to
+    // `threads` threads (the answers are the same).
     virtual void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours,
-                               std::vector<int64_t>& distance2) const = 0;
+                               std::vector<int64_t>& distance2, int threads = 1) const = 0;
 };
 
 // What an index serves: the traversal's searches (rank search, size

@@ -179,6 +179,15 @@ def test_search_starts_never_gives_a_larger_file():
         assert len(out_faces) == len(faces) and len(out_vertices) == len(vertices)
 
 
+def test_threads_never_change_the_bytes():
+    # elephant-with-holes: over 11 bits a vertex in the tree, so refine's
+    # estimates run beside the tree's attempt on the second thread.
+    vertices, faces = read_ply(os.path.join(DATA, "elephant-with-holes.ply"))
+    one = drm.encode(vertices, faces, threads=1)
+    assert drm.encode(vertices, faces, threads=2) == one
+    assert drm.encode(vertices, faces) == one
+
+
 def test_attributes_come_back():
     vertices, faces = small_mesh()
     colors = np.arange(24, dtype=np.uint8).reshape(6, 4)

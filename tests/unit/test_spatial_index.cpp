@@ -253,5 +253,33 @@ TEST(SpatialIndex, AutoTakesTheMeasuredDefaults) {
     EXPECT_NE(resolveIndex(NeighbourIndex::Auto, IndexRole::NeighbourGraph), NeighbourIndex::Auto);
 }
 
+// Two threads split the cells between them (from kSplitFromPoints points
+// on): every row and the uncertain list are what one thread gives. A sphere
+// of 30,000 points with clusters of coincident copies (ties by index across
+// the split) and a few far outliers (uncertain points on both sides).
+TEST(AllNearest, TwoThreadsGiveWhatOneGives) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> angle(0, 6.283185307179586);
+    std::vector<int32_t> grid;
+    for (int i = 0; i < 30000; ++i) {
+        const double a = angle(rng), b = angle(rng) / 2;
+        for (double c : {std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)})
+            grid.push_back(int32_t(std::lround(40000 + 30000 * c)));
+        if (i % 997 == 0)
+            for (int copy = 0; copy < 9; ++copy) grid.insert(grid.end(), grid.end() - 3, grid.end());
+    }
+    grid.insert(grid.end(), {0, 0, 0, 90000, 3, 7, 5, 90000, 11});
+    const size_t n = grid.size() / 3, k = 8;
+    std::vector<uint32_t> oneNeighbours(n * k, 12345), twoNeighbours(n * k, 12345);
+    std::vector<int64_t> oneDistance2(n * k, -1), twoDistance2(n * k, -1);
+    const std::vector<uint32_t> oneUncertain = nearestOfEachByCells(grid, k, -1, oneNeighbours, oneDistance2, 1);
+    const std::vector<uint32_t> twoUncertain = nearestOfEachByCells(grid, k, -1, twoNeighbours, twoDistance2, 2);
+    EXPECT_FALSE(oneUncertain.empty());  // the outliers at least
+    EXPECT_EQ(twoUncertain, oneUncertain);
+    EXPECT_EQ(twoNeighbours, oneNeighbours);
+    EXPECT_EQ(twoDistance2, oneDistance2);
+    EXPECT_LT(double(oneUncertain.size()), 0.5 * double(n));  // most rows were filled, so compared
+}
+
 }  // namespace
 }  // namespace drm
