@@ -122,6 +122,8 @@ usage_errors)
     expect_error 2 out.drm encode "$data/torus.ply" out.drm --frobnicate
     expect_error 2 - info
     expect_error 1 out.drm encode "$data/torus.ply" out.drm --bits 99
+    expect_error 2 out.drm encode "$data/torus.ply" out.drm --threads 3
+    expect_error 2 out.drm encode "$data/torus.ply" out.drm --threads 0
     ;;
 encode_decode_verify)
     run 0 encode "$data/fandisk.ply" fandisk.drm
@@ -131,6 +133,10 @@ encode_decode_verify)
     head -c 3 decoded.ply | grep -q ply || fail "decode did not write PLY"
     run 0 verify "$data/fandisk.ply"
     grep -q 'lossless$' out.txt || fail "verify printed: $(cat out.txt)"
+    # One thread or two, the same file.
+    run 0 encode "$data/elephant-with-holes.ply" two.drm --threads 2
+    run 0 encode "$data/elephant-with-holes.ply" one.drm --threads 1
+    cmp -s one.drm two.drm || fail "--threads 1 and --threads 2 wrote different files"
     # The decoded mesh is a mesh like any other: it encodes and verifies too.
     run 0 verify decoded.ply --bits 10 --predictor parallelogram
     run 0 encode "$data/nefertiti.ply" n.drm --bits 14 --predictor midpoint --curvature on --geometry raw
