@@ -9,6 +9,9 @@
 #include <iomanip>
 #include <sstream>
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace drm {
 namespace cli {
@@ -235,6 +238,15 @@ bool hasExtension(const std::string& path, const std::string& extension) {
     if (path.size() < extension.size()) return false;
     return std::equal(extension.begin(), extension.end(), path.end() - long(extension.size()),
                       [](char a, char b) { return std::tolower((unsigned char)a) == std::tolower((unsigned char)b); });
+}
+
+// The encoder's second thread would otherwise get an arena of its own,
+// outside the huge-page advice (igea: 6,600 page faults instead of 2,000,
+// and its vertex coder ran slower there than on one thread).
+void shareOneMallocArena() {
+#ifdef __GLIBC__
+    mallopt(M_ARENA_MAX, 1);
+#endif
 }
 
 }  // namespace cli

@@ -63,6 +63,11 @@ std::string attributeSummary(const drm::Stats& stats);
 // "drm: note: ..." on stderr.
 void printNote(const std::string& note);
 
+// One mesh encoded on two threads: both allocate from the main heap, where
+// huge_pages.cpp's advice covers the blocks. Call before any thread starts;
+// not for batches, whose workers would then queue for one lock.
+void shareOneMallocArena();
+
 // A one-line progress bar on stderr, drawn only when stderr is a terminal.
 // Cleared when finished or destroyed (also while an exception unwinds).
 class ProgressBar {

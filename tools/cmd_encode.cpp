@@ -157,6 +157,7 @@ int runEncode(const std::vector<std::string>& args) {
     const std::string& input = parsed.positional[0];
     const std::string& output = parsed.positional[1];
 
+    shareOneMallocArena();
     ProgressBar bar("encoding " + fileName(input));
     const EncodedFile encoded = encodeFile(input, output, options, &bar);
     printNotes(encoded.notes);

@@ -111,6 +111,7 @@ int runVerify(const std::vector<std::string>& args) {
         return 0;
     }
     const std::string& input = parsed.positional[0];
+    shareOneMallocArena();
     ProgressBar bar("encoding " + fileName(input));
     const VerifiedFile verified = verifyFile(input, options, &bar);
     printNotes(verified.notes);

@@ -34,7 +34,8 @@ std::vector<std::pair<std::string, std::string>> placeholders() {
     for (drm::Predictor p : {drm::Predictor::Auto, drm::Predictor::Parallelogram, drm::Predictor::Midpoint})
         predictors.push_back(drm::predictorName(p));
     std::vector<std::string> coders = {drm::geometryCoderName(drm::GeometryCoder::Auto)};  // an option, not a stored coder
-    for (drm::GeometryCoder g : {drm::GeometryCoder::SpanningTree, drm::GeometryCoder::Refine, drm::GeometryCoder::Raw})
+    for (drm::GeometryCoder g : {drm::GeometryCoder::SpanningTree, drm::GeometryCoder::Refine, drm::GeometryCoder::Sorted,
+                                 drm::GeometryCoder::Raw})
         coders.push_back(drm::geometryCoderName(g));
     std::vector<std::string> autoLowBits;
     for (int k : drm::kAutoRefineLowBits) autoLowBits.push_back(std::to_string(k));

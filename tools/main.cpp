@@ -32,17 +32,13 @@ namespace {
 // igea x16 encode +9 %); 64 corpus files on two workers: 0.92 of the CPU
 // and a lower peak. The heap grows 16 MiB at a time, so that the huge-page
 // advice given with its large blocks (huge_pages.cpp) covers what smaller
-// blocks take from it next. Every thread allocates from that one heap:
-// the encoder's second thread would otherwise get an arena of its own,
-// which the advice does not cover (igea: 6,600 page faults instead of
-// 2,000, and its vertex coder ran slower there than on one thread).
-// Process-wide, so the tool's choice, not the library's.
+// blocks take from it next. Process-wide, so the tool's choice, not the
+// library's (as is cli.cpp's shareOneMallocArena, for one mesh's threads).
 void keepFreedMemoryForReuse() {
 #ifdef __GLIBC__
     mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's maximum on 64-bit systems
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
     mallopt(M_TOP_PAD, 16 << 20);  // virtual: a page costs memory once touched
-    mallopt(M_ARENA_MAX, 1);
 #endif
 }
 

@@ -4,6 +4,8 @@
 #include <future>
 #include <utility>
 
+#include "concurrency.h"
+
 namespace drm {
 namespace {
 
@@ -254,7 +256,7 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
         const size_t middle = size_t(std::upper_bound(cellStart.begin(), cellStart.begin() + ptrdiff_t(cellCount),
                                                       uint32_t(n / 2)) - cellStart.begin());
         std::vector<uint32_t> secondHalf;
-        std::future<void> second = std::async(std::launch::async, [&] { searchCells(middle, cellCount, secondHalf); });
+        std::future<void> second = startBeside([&] { searchCells(middle, cellCount, secondHalf); });
         searchCells(0, middle, uncertain);
         second.get();
         uncertain.insert(uncertain.end(), secondHalf.begin(), secondHalf.end());

@@ -62,7 +62,7 @@ const char* geometryCoderName(GeometryCoder g) {
 GeometryCoder parseGeometryCoder(const std::string& name) {
     if (name == geometryCoderName(GeometryCoder::Auto)) return GeometryCoder::Auto;
     if (const GeometryCoderEntry* entry = geometryCoderByName(name)) return entry->id;
-    // "auto, tree, refine or raw": auto, then the table's names in its listing order.
+    // "auto, tree, refine, sorted or raw": auto, then the table's names in its listing order.
     const std::vector<const GeometryCoderEntry*>& coders = geometryCoders();
     std::string names = std::string(geometryCoderName(GeometryCoder::Auto)) + ", ";
     for (size_t i = 0; i < coders.size(); ++i)

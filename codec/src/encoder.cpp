@@ -9,6 +9,7 @@
 #include <string>
 #include <thread>
 
+#include "concurrency.h"
 #include "encoder.h"
 #include "file_format.h"
 #include "geometry_coders.h"
@@ -270,7 +271,13 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
 bool secondThreadAllowed(const EncodeOptions& options) {
     return options.threads >= 2 || (options.threads == 0 && std::thread::hardware_concurrency() > 1);
 }
-int threadsFor(const EncodeOptions& options) { return secondThreadAllowed(options) ? 2 : 1; }
+// The threads a search may spread over: FLANN's batch search takes them all
+// (every core by default, as before the encoder had threads of its own);
+// the grid's splits take two of any count above one.
+int threadsFor(const EncodeOptions& options) {
+    if (options.threads != 0) return options.threads;
+    return int(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 // The vertex section of one attempt: the coder asked for, or its fallback
 // where that is no larger.
@@ -289,10 +296,10 @@ VertexSection codeVertexSection(const std::vector<int32_t>& quantized, const Enc
     VertexSection section;
     section.coder = geometryCoderOf(asked);
     section.encoding = section.coder->encode(vertexGrid, options.bits - lowBits, options.index, trials, threadsFor(options));
-    if (const GeometryCoderEntry* fallback = section.coder->fallback) {
-        // Scattered points (a soup of random triangles) predict no better
-        // than raw bits: keep whichever section is smaller (the fallback's
-        // on a tie).
+    // Scattered points (a soup of random triangles) predict no better
+    // from their neighbours than from nothing: each fallback in turn is
+    // kept where its section is no larger.
+    for (const GeometryCoderEntry* fallback = section.coder->fallback; fallback; fallback = fallback->fallback) {
         GeometryEncoding alternative = fallback->encode(vertexGrid, options.bits - lowBits, options.index, nullptr, 1);
         if (alternative.bytes.size() <= section.encoding.bytes.size()) {
             section.coder = fallback;
@@ -538,7 +545,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         // time (venus), so on two cores the three end sooner than the
         // estimates one after the other beside it.
         for (Estimate& e : estimates)
-            estimating.push_back(std::async(std::launch::async, estimate, std::ref(e), double(treeGeometry)));
+            estimating.push_back(startBeside([&estimate, &e, treeGeometry] { estimate(e, double(treeGeometry)); }));
     }
     Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section);
     const size_t treeTotal = best.encoded.bytes.size();
@@ -602,7 +609,9 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     VertexSection firstSection;
     std::future<VertexSection> firstSectionCoding;
     if (secondThreadAllowed(options))
-        firstSectionCoding = std::async(std::launch::async, [&] {
+        // Its own second thread (the graph's halves, the forest) makes a
+        // third while the topology check lasts (igea: 30 of 350 ms).
+        firstSectionCoding = startBeside([&] {
             return codeVertexSection(prepared.quantized, options, firstCoder, firstLowBits, nullptr);
         });
     // A mesh the traversal can take as it is needs no cut (the common case,

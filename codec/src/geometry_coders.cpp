@@ -1,6 +1,7 @@
 #include "geometry_coders.h"
 
 #include "geometry_raw.h"
+#include "geometry_sorted.h"
 
 namespace drm {
 namespace {
@@ -16,6 +17,18 @@ GeometryEncoding encodeRaw(const std::vector<int32_t>& grid, int bits, Neighbour
 VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int) {
     VertexSet out;
     out.grid = unpackGrid(data, size, vertexCount, bits);
+    return out;
+}
+
+// Sorted: the points in Morton order, as gaps (geometry_sorted.h).
+GeometryEncoding encodeSorted(const std::vector<int32_t>& grid, int bits, NeighbourIndex, GeometryTreeTrials*, int) {
+    GeometryEncoding out;
+    out.bytes = encodeSortedPoints(grid, bits, out.order);
+    return out;
+}
+VertexSet decodeSorted(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int) {
+    VertexSet out;
+    out.grid = decodeSortedPoints(data, size, vertexCount, bits);
     return out;
 }
 
@@ -71,14 +84,17 @@ std::vector<int32_t> decodeRefineLowBits(const VertexSet& vertices, const std::v
 
 int noRefineBits(const uint8_t*, size_t, int) { return 0; }
 
-// Indexed by id - 1 (the ids are 1, 2, 3).
+// Indexed by id - 1 (the ids are 1 to 4). The tree falls back to the sorted
+// points, and they to raw bits (tiny sets, whose lengths cost more than
+// the gaps save).
 const GeometryCoderEntry kCoders[] = {
     {GeometryCoder::Raw, "raw", encodeRaw, nullptr, decodeRaw, noRefineBits, nullptr, nullptr},
-    {GeometryCoder::SpanningTree, "tree", encodeTree, &kCoders[0], decodeTree, noRefineBits, nullptr, nullptr},
+    {GeometryCoder::SpanningTree, "tree", encodeTree, &kCoders[3], decodeTree, noRefineBits, nullptr, nullptr},
     // Refine's own fallback, the spanning tree alone, is one of the low-bit
     // counts the encoder tries (encodeConnectivity), not a section swap.
     {GeometryCoder::Refine, "refine", encodeRefineCoarse, nullptr, decodeRefineCoarse, refineBitsOfRefine,
      encodeRefineLowBits, decodeRefineLowBits},
+    {GeometryCoder::Sorted, "sorted", encodeSorted, &kCoders[0], decodeSorted, noRefineBits, nullptr, nullptr},
 };
 constexpr size_t kCoderCount = sizeof kCoders / sizeof kCoders[0];
 
@@ -99,7 +115,7 @@ const GeometryCoderEntry* geometryCoderByName(const std::string& name) {
 const std::vector<const GeometryCoderEntry*>& geometryCoders() {
     static const std::vector<const GeometryCoderEntry*> listed = {
         geometryCoderOf(GeometryCoder::SpanningTree), geometryCoderOf(GeometryCoder::Refine),
-        geometryCoderOf(GeometryCoder::Raw)};
+        geometryCoderOf(GeometryCoder::Sorted), geometryCoderOf(GeometryCoder::Raw)};
     return listed;
 }
 

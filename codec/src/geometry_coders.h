@@ -30,7 +30,7 @@ struct VertexSet {
 
 struct GeometryCoderEntry {
     GeometryCoder id;  // the byte the header stores
-    const char* name;  // geometryCoderName / parseGeometryCoder: "tree", "refine", "raw"
+    const char* name;  // geometryCoderName / parseGeometryCoder: "tree", "refine", "sorted", "raw"
 
     // Encoder, first pass: grid holds the coordinates to code (3 per vertex,
     // input order) at `bits` bits. The section bytes and the decoded order.

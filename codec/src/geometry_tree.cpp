@@ -11,6 +11,7 @@
 #include "bit_model.h"
 #include "cell_index.h"
 #include "common.h"
+#include "concurrency.h"
 #include "drm/drm.h"
 #include "local_frame.h"
 #include "quantize.h"
@@ -994,7 +995,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     if (threads >= 2 && which == GeometryTree::Smaller && grid.size() / 3 >= kForestBesideFromVertices) {
         bool uncoded = false;
         for (const auto& way : ways) uncoded |= trials->coded.count((way.first ? 2 : 0) + (way.second ? 1 : 0)) == 0;
-        if (uncoded) forestBuilding = std::async(std::launch::async, buildSpanningForest);
+        if (uncoded) forestBuilding = startBeside(buildSpanningForest);
     }
     // Codes one way, unless an earlier call did.
     // A section given up on (empty: codeTree) is kept as such, and is never

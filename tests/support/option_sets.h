@@ -43,6 +43,10 @@ inline std::vector<NamedOptions> optionSets() {
         o.bits = 21;
         o.predictor = drm::Predictor::Parallelogram;
     });
+    add("sorted-bits21", [](drm::EncodeOptions& o) {  // 63-bit Morton keys
+        o.geometry = drm::GeometryCoder::Sorted;
+        o.bits = 21;
+    });
     add("parallelogram", [](drm::EncodeOptions& o) { o.predictor = drm::Predictor::Parallelogram; });
     add("midpoint-curvature", [](drm::EncodeOptions& o) {
         o.predictor = drm::Predictor::Midpoint;

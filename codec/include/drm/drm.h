@@ -170,15 +170,18 @@ enum class GeometryCoder : uint8_t {
                        // smallest file wins)
     Raw = 1,           // every grid coordinate in `bits` bits; keeps the input order
     SpanningTree = 2,  // predictive coding along a nearest-neighbour spanning tree
-                       // (the encoder falls back to raw where that is smaller)
+                       // (the encoder falls back to sorted, or raw, where that is smaller)
     Refine = 3,        // the coarse grid (low bits dropped) by the spanning tree, the
                        // connectivity ranked on it, then the low bits predicted across
                        // the decoded triangles (the encoder falls back to the spanning
                        // tree where that is smaller)
+    Sorted = 4,        // the points in Morton order, each as its gap from the one before:
+                       // for scattered points that predict no better than nothing
+                       // (the encoder falls back to raw where that is smaller)
 };
 
 const char* geometryCoderName(GeometryCoder g);
-// Parses "auto", "raw", "tree", "refine"; throws Error otherwise.
+// Parses "auto", "raw", "tree", "refine", "sorted"; throws Error otherwise.
 GeometryCoder parseGeometryCoder(const std::string& name);
 
 const char* predictorName(Predictor p);

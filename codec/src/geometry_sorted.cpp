@@ -1,0 +1,101 @@
+#include "geometry_sorted.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "common.h"
+#include "drm/drm.h"
+#include "range_coder.h"
+#include "rank_coder.h"
+
+namespace drm {
+namespace {
+
+// Gaps are coded as w = gap + 1, 1 .. 2^63: bit lengths 1 .. 64.
+constexpr uint32_t kLengths = 64;
+
+AdaptiveFrequencies lengthModel() { return AdaptiveFrequencies(std::vector<uint16_t>(kLengths, 1)); }
+
+// The bits of x (below 2^21) spread to every third bit, from bit 0.
+uint64_t spread(uint64_t x) {
+    x &= 0x1FFFFF;
+    x = (x | x << 32) & 0x1F00000000FFFFull;
+    x = (x | x << 16) & 0x1F0000FF0000FFull;
+    x = (x | x << 8) & 0x100F00F00F00F00Full;
+    x = (x | x << 4) & 0x10C30C30C30C30C3ull;
+    x = (x | x << 2) & 0x1249249249249249ull;
+    return x;
+}
+// spread's inverse: every third bit of k, from bit 0, packed together.
+uint32_t gather(uint64_t k) {
+    k &= 0x1249249249249249ull;
+    k = (k | k >> 2) & 0x10C30C30C30C30C3ull;
+    k = (k | k >> 4) & 0x100F00F00F00F00Full;
+    k = (k | k >> 8) & 0x1F0000FF0000FFull;
+    k = (k | k >> 16) & 0x1F00000000FFFFull;
+    k = (k | k >> 32) & 0x1FFFFF;
+    return uint32_t(k);
+}
+uint64_t mortonKey(const int32_t* p) {
+    return spread(uint32_t(p[0])) | spread(uint32_t(p[1])) << 1 | spread(uint32_t(p[2])) << 2;
+}
+
+}  // namespace
+
+std::vector<uint8_t> encodeSortedPoints(const std::vector<int32_t>& grid, int bits, std::vector<uint32_t>& order) {
+    if (bits < 1 || bits > kMaxQuantizationBits)
+        throw Error(ErrorKind::Internal, "internal error: sorted points at " + std::to_string(bits) + " bits");
+    const size_t n = grid.size() / 3;
+    std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
+    for (size_t v = 0; v < n; ++v) keyed[v] = {mortonKey(&grid[3 * v]), uint32_t(v)};
+    std::sort(keyed.begin(), keyed.end());
+    order.resize(n);
+    RangeEncoder coder;
+    AdaptiveFrequencies lengths = lengthModel();
+    uint64_t previous = 0;
+    for (size_t d = 0; d < n; ++d) {
+        order[d] = keyed[d].second;
+        const uint64_t w = keyed[d].first - previous + 1;
+        const int length = bitLength(w);
+        lengths.encode(coder, uint32_t(length - 1));
+        coder.encodeWideBits(w, length - 1);
+        previous = keyed[d].first;
+    }
+    return coder.finish();
+}
+
+std::vector<int32_t> decodeSortedPoints(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
+    if (bits < 1 || bits > kMaxQuantizationBits)
+        throw Error(ErrorKind::Corrupt, "corrupt file: sorted points at " + std::to_string(bits) + " bits");
+    // Every vertex codes one adaptive length, which no table gives a
+    // probability above 1 - 63/65536: at least ~0.0014 bits, so at most
+    // ~5,800 vertices a byte. A count far beyond that is refused before
+    // anything is allocated.
+    constexpr uint64_t kMaxVerticesPerByte = 8192;
+    if (vertexCount > (uint64_t(size) + 8) * kMaxVerticesPerByte)
+        throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(vertexCount) +
+                    " vertices cannot fit in a geometry section of " + std::to_string(size) + " bytes");
+    const uint64_t keyLimit = uint64_t(1) << (3 * bits);  // keys lie below; 3 * 21 < 64
+    RangeDecoder coder(data, size);
+    AdaptiveFrequencies lengths = lengthModel();
+    std::vector<int32_t> grid;
+    grid.reserve(3 * size_t(std::min<uint64_t>(vertexCount, uint64_t(1) << 22)));
+    uint64_t key = 0;
+    for (uint64_t d = 0; d < vertexCount; ++d) {
+        const int length = int(lengths.decode(coder)) + 1;
+        const uint64_t w = (uint64_t(1) << (length - 1)) | coder.decodeWideBits(length - 1);
+        if (coder.bytesPastEnd() > 0)
+            throw Error(ErrorKind::Corrupt, "corrupt file: the geometry section ends before vertex " + std::to_string(d));
+        const uint64_t gap = w - 1;
+        if (gap >= keyLimit - key)
+            throw Error(ErrorKind::Corrupt, "corrupt file: geometry vertex " + std::to_string(d) + " falls outside the grid");
+        key += gap;
+        grid.push_back(int32_t(gather(key)));
+        grid.push_back(int32_t(gather(key >> 1)));
+        grid.push_back(int32_t(gather(key >> 2)));
+    }
+    return grid;
+}
+
+}  // namespace drm
