@@ -236,8 +236,9 @@ PYBIND11_MODULE(drm, m) {
         py::arg("vertices"), py::arg("faces"), py::arg("bits") = drm::kDefaultQuantizationBits,
         "encode(vertices (n, 3) float, faces (m, 3) uint32, bits=12, **options) -> bytes\n"
         "options: predictor, geometry, levers, curvature, refine_bits, keep_vertex_order, verify,\n"
-        "normal_bits, uv_bits, weld ('auto', 'on', 'off'), search_starts, threads (1 or 2, default: 2 on\n"
-        "a machine of several cores; never changes the bytes), keep (attribute list), attributes (dict of arrays).");
+        "normal_bits, uv_bits, weld ('auto', 'on', 'off'), search_starts, threads (0, the default: a second\n"
+        "thread where the machine has several cores; 1: one; never changes the bytes), keep (attribute list),\n"
+        "attributes (dict of arrays).");
     m.def(
         "encode_full",
         [](const FloatArray& vertices, const UIntArray& faces, int bits, const py::kwargs& options) {

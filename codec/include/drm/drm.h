@@ -296,10 +296,11 @@ struct EncodeOptions {
     // section beside the mesh checks, the neighbour graph in two halves, the
     // spanning forest beside the cheapest-first tree, refine's estimates
     // beside the tree's attempt): 1 keeps everything on the calling thread,
-    // 2 or more allows a second (and, for the two estimates, a third), 0 (the
-    // default) is 2 where the machine has more than one core, else 1. Never
-    // changes the file. A program encoding several meshes at once, one per
-    // core, passes 1.
+    // 2 or more allows a second (briefly a third: the two estimates, the
+    // vertex coder's split beside the topology check), 0 (the default) is 2
+    // where the machine has more than one core, else 1; FLANN's neighbour
+    // graph takes this many threads (0: every core). Never changes the file.
+    // A program encoding several meshes at once, one per core, passes 1.
     int threads = 0;
     Progress progress;                      // may be empty
 };
