@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "concurrency.h"
+#include "morton.h"
 
 namespace drm {
 namespace {
@@ -12,20 +13,6 @@ namespace {
 constexpr int kCoordinateBits = 21;
 // Below this many points a second thread costs more than it saves.
 constexpr size_t kSplitFromPoints = 16384;
-
-// x's low 21 bits spread out to every third bit (Morton order).
-uint64_t spread(uint64_t x) {
-    x &= 0x1FFFFF;
-    x = (x | x << 32) & 0x1F00000000FFFFull;
-    x = (x | x << 16) & 0x1F0000FF0000FFull;
-    x = (x | x << 8) & 0x100F00F00F00F00Full;
-    x = (x | x << 4) & 0x10C30C30C30C30C3ull;
-    x = (x | x << 2) & 0x1249249249249249ull;
-    return x;
-}
-uint64_t mortonOf(int64_t x, int64_t y, int64_t z) {
-    return spread(uint64_t(x)) | spread(uint64_t(y)) << 1 | spread(uint64_t(z)) << 2;
-}
 
 // The points in Morton order of their coordinates: a cell of any power-of-
 // two width is then one run, whose key is the point keys >> 3 * shift.
@@ -39,7 +26,7 @@ SortedPoints sortByMorton(const std::vector<int32_t>& grid) {
     const size_t n = grid.size() / 3;
     std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
     for (size_t v = 0; v < n; ++v)
-        keyed[v] = {mortonOf(grid[3 * v], grid[3 * v + 1], grid[3 * v + 2]), uint32_t(v)};
+        keyed[v] = {mortonKey(uint32_t(grid[3 * v]), uint32_t(grid[3 * v + 1]), uint32_t(grid[3 * v + 2])), uint32_t(v)};
     std::sort(keyed.begin(), keyed.end());
     SortedPoints sorted;
     sorted.key.resize(n);

@@ -556,12 +556,15 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     EncodeOptions refine = options;
     refine.geometry = GeometryCoder::Refine;
     for (Estimate& e : estimates) {
+        // The estimate's trees serve its own attempt only: freed after it
+        // (the estimates ran together, so each one's are held till here).
+        GeometryTreeTrials trials = std::move(e.trials);
         if (e.bytes == SIZE_MAX) continue;
-        const double growth = e.trials.nearest && e.trials.nearest->spacing <= kCrowdedCoarseSpacing
+        const double growth = trials.nearest && trials.nearest->spacing <= kCrowdedCoarseSpacing
                                   ? kCrowdedConnectivityGrowth * double(mesh.vertexCount()) / 8.0
                                   : 0.0;
         if (double(treeGeometry) + slack - double(e.bytes) - growth < kRefineMinimumGain * double(treeTotal)) continue;
-        Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, e.lowBits, progress, &e.trials);
+        Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, e.lowBits, progress, &trials);
         if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
             best = std::move(refined);
     }

@@ -6,6 +6,7 @@
 
 #include "common.h"
 #include "drm/drm.h"
+#include "morton.h"
 #include "range_coder.h"
 #include "rank_coder.h"
 
@@ -17,29 +18,7 @@ constexpr uint32_t kLengths = 64;
 
 AdaptiveFrequencies lengthModel() { return AdaptiveFrequencies(std::vector<uint16_t>(kLengths, 1)); }
 
-// The bits of x (below 2^21) spread to every third bit, from bit 0.
-uint64_t spread(uint64_t x) {
-    x &= 0x1FFFFF;
-    x = (x | x << 32) & 0x1F00000000FFFFull;
-    x = (x | x << 16) & 0x1F0000FF0000FFull;
-    x = (x | x << 8) & 0x100F00F00F00F00Full;
-    x = (x | x << 4) & 0x10C30C30C30C30C3ull;
-    x = (x | x << 2) & 0x1249249249249249ull;
-    return x;
-}
-// spread's inverse: every third bit of k, from bit 0, packed together.
-uint32_t gather(uint64_t k) {
-    k &= 0x1249249249249249ull;
-    k = (k | k >> 2) & 0x10C30C30C30C30C3ull;
-    k = (k | k >> 4) & 0x100F00F00F00F00Full;
-    k = (k | k >> 8) & 0x1F0000FF0000FFull;
-    k = (k | k >> 16) & 0x1F00000000FFFFull;
-    k = (k | k >> 32) & 0x1FFFFF;
-    return uint32_t(k);
-}
-uint64_t mortonKey(const int32_t* p) {
-    return spread(uint32_t(p[0])) | spread(uint32_t(p[1])) << 1 | spread(uint32_t(p[2])) << 2;
-}
+uint64_t mortonKeyOf(const int32_t* p) { return mortonKey(uint32_t(p[0]), uint32_t(p[1]), uint32_t(p[2])); }
 
 }  // namespace
 
@@ -48,7 +27,7 @@ std::vector<uint8_t> encodeSortedPoints(const std::vector<int32_t>& grid, int bi
         throw Error(ErrorKind::Internal, "internal error: sorted points at " + std::to_string(bits) + " bits");
     const size_t n = grid.size() / 3;
     std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
-    for (size_t v = 0; v < n; ++v) keyed[v] = {mortonKey(&grid[3 * v]), uint32_t(v)};
+    for (size_t v = 0; v < n; ++v) keyed[v] = {mortonKeyOf(&grid[3 * v]), uint32_t(v)};
     std::sort(keyed.begin(), keyed.end());
     order.resize(n);
     RangeEncoder coder;
@@ -91,9 +70,9 @@ std::vector<int32_t> decodeSortedPoints(const uint8_t* data, size_t size, uint64
         if (gap >= keyLimit - key)
             throw Error(ErrorKind::Corrupt, "corrupt file: geometry vertex " + std::to_string(d) + " falls outside the grid");
         key += gap;
-        grid.push_back(int32_t(gather(key)));
-        grid.push_back(int32_t(gather(key >> 1)));
-        grid.push_back(int32_t(gather(key >> 2)));
+        grid.push_back(int32_t(gatherMortonBits(key)));
+        grid.push_back(int32_t(gatherMortonBits(key >> 1)));
+        grid.push_back(int32_t(gatherMortonBits(key >> 2)));
     }
     return grid;
 }

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus_files.h"
 #include "mesh_compare.h"
 #include "mesh_defects.h"
 #include "tiny_ply.h"
@@ -24,14 +25,7 @@ namespace {
 
 // The corpus files are all binary little-endian PLY with float x, y, z and
 // uchar/int face lists, the layout drm_test::readTinyPly reads.
-std::vector<std::string> corpusFiles() {
-    std::vector<std::string> names;
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(DRM_SHARED_MESHES_DIR, error))
-        if (entry.is_regular_file() && entry.path().extension() == ".ply") names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
+std::vector<std::string> corpusFiles() { return drm_test::plyFilesIn(DRM_SHARED_MESHES_DIR); }
 
 bool runningInCI() {
     const char* ci = std::getenv("CI");
@@ -74,12 +68,7 @@ TEST_P(CorpusMesh, RoundTripsWithTheRepairsItNeeds) {
 
 // The list is taken when the tests are discovered (at build time).
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, CorpusMesh, ::testing::ValuesIn(corpusFiles()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             std::string name = std::filesystem::path(info.param).stem().string();
-                             for (char& c : name)
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return name;
-                         });
+                         drm_test::testNameOfMeshFile);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(CorpusMesh);
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "option_sets.h"
+#include "corpus_files.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"
 
@@ -84,14 +85,7 @@ TEST(IndexAgreement, TestDataMeshes) {
         }
 }
 
-std::vector<std::string> corpusFiles() {
-    std::vector<std::string> names;
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(DRM_SHARED_MESHES_DIR, error))
-        if (entry.is_regular_file() && entry.path().extension() == ".ply") names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
+std::vector<std::string> corpusFiles() { return drm_test::plyFilesIn(DRM_SHARED_MESHES_DIR); }
 
 class CorpusMesh : public ::testing::TestWithParam<std::string> {};
 
@@ -105,12 +99,7 @@ TEST_P(CorpusMesh, SameFileAndMeshWithEitherIndex) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, CorpusMesh, ::testing::ValuesIn(corpusFiles()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                             std::string name = std::filesystem::path(info.param).stem().string();
-                             for (char& c : name)
-                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                             return name;
-                         });
+                         drm_test::testNameOfMeshFile);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(CorpusMesh);
 
 }  // namespace
