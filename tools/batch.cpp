@@ -39,6 +39,12 @@ int jobsFrom(const Arguments& args) {
     return int(jobs);
 }
 
+drm::EncodeOptions perFileOptions(const drm::EncodeOptions& options, int jobs, size_t files) {
+    drm::EncodeOptions perFile = options;
+    if (std::min<size_t>(size_t(std::max(1, jobs)), files) > 1) perFile.threads = 1;
+    return perFile;
+}
+
 void expectInputAndOutput(const Arguments& args, const std::string& command, const std::string& what) {
     std::error_code error;
     for (const std::string& path : args.positional)

@@ -23,6 +23,10 @@ const std::vector<std::string>& batchOptionNames();
 // (at least 1). A malformed value is a UsageError.
 int jobsFrom(const Arguments& args);
 
+// The options each file of a batch encodes with: one thread per file where
+// several files are coded at once (they already share the cores).
+drm::EncodeOptions perFileOptions(const drm::EncodeOptions& options, int jobs, size_t files);
+
 // Without -o: exactly IN and OUT, neither a folder. `what` names them for
 // the messages ("an input mesh and an output .drm file"). UsageError
 // otherwise.

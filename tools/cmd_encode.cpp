@@ -7,7 +7,6 @@
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -120,9 +119,7 @@ int encodeMany(const Arguments& parsed, const drm::EncodeOptions& options) {
     const std::vector<std::string> outputs = outputPaths(inputs, dir, ".drm");
     std::vector<BatchFile> files;
     for (size_t i = 0; i < inputs.size(); ++i) files.push_back({inputs[i], outputs[i], fileBytes(inputs[i])});
-    // Files already share the cores: each encodes on its own worker alone.
-    drm::EncodeOptions perFile = options;
-    if (std::min<size_t>(size_t(jobs), files.size()) > 1) perFile.threads = 1;
+    const drm::EncodeOptions perFile = perFileOptions(options, jobs, files.size());
     runBatch({"encoded", "bytes out", false}, files, jobs, [&](const BatchFile& file) {
         FileOutcome outcome;
         try {

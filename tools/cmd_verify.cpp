@@ -7,7 +7,6 @@
 
 #include <drm_vcg/mesh_io.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -92,8 +91,7 @@ int runVerify(const std::vector<std::string>& args) {
                           ".ply, .obj, .off or .stl files");
         std::vector<BatchFile> files;
         for (const std::string& input : inputs) files.push_back({input, "", fileBytes(input)});
-        drm::EncodeOptions perFile = options;  // files already share the cores
-        if (std::min<size_t>(size_t(jobs), files.size()) > 1) perFile.threads = 1;
+        const drm::EncodeOptions perFile = perFileOptions(options, jobs, files.size());
         runBatch({"verified lossless", "bytes encoded", false}, files, jobs, [&](const BatchFile& file) {
             FileOutcome outcome;
             try {

@@ -279,12 +279,6 @@ int threadsFor(const EncodeOptions& options) {
     return int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-// The sorted points (coder 4) beat the tree on the corpus only where the
-// tree spent 19.9 bits a vertex or more (hero; soup 32.6): below this their
-// sort and coding are not tried (2 % of igea's encoding time, at 8 bits a
-// vertex).
-constexpr double kSortedFromBitsPerVertex = 16.0;
-
 // The vertex section of one attempt: the coder asked for, or its fallback
 // where that is no larger.
 struct VertexSection {
@@ -307,9 +301,7 @@ VertexSection codeVertexSection(const std::vector<int32_t>& quantized, const Enc
     // kept where its section is no larger.
     const size_t vertices = std::max<size_t>(1, vertexGrid.size() / 3);
     for (const GeometryCoderEntry* fallback = section.coder->fallback; fallback; fallback = fallback->fallback) {
-        if (fallback->id == GeometryCoder::Sorted &&
-            8.0 * double(section.encoding.bytes.size()) < kSortedFromBitsPerVertex * double(vertices))
-            continue;
+        if (8.0 * double(section.encoding.bytes.size()) < fallback->triedFromBitsPerVertex * double(vertices)) continue;
         GeometryEncoding alternative = fallback->encode(vertexGrid, options.bits - lowBits, options.index, nullptr, 1);
         if (alternative.bytes.size() <= section.encoding.bytes.size()) {
             section.coder = fallback;

@@ -60,6 +60,9 @@ struct GeometryCoderEntry {
     // decoded triangles.
     std::vector<int32_t> (*decodeAfterConnectivity)(const VertexSet& vertices, const std::vector<int32_t>& coarse,
                                                     const std::vector<uint32_t>& triangles);
+    // As a fallback, tried only where the section it would replace spends
+    // at least this many bits a vertex (0: always).
+    double triedFromBitsPerVertex = 0;
 };
 
 // nullptr for an id no coder has (file_format refuses the file as
