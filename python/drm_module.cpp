@@ -54,6 +54,7 @@ py::dict statsDict(const drm::Stats& s, bool decoded) {
     d["curvature"] = s.curvature;
     d["geometry"] = drm::geometryCoderName(s.geometry);
     d["refine_bits"] = s.refineBits;
+    d["vertex_numbering"] = s.mortonNumbering ? "morton" : "geometry";
     py::dict levers;
     levers["topological_filter"] = s.levers.topologicalFilter;
     levers["gap_closing"] = s.levers.gapClosing;

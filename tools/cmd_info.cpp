@@ -90,6 +90,7 @@ void printJson(const std::string& path, const drm::Stats& s, bool ranks) {
     field("predictor", jsonString(drm::predictorName(s.predictor)));
     field("curvature", boolean(s.curvature));
     field("geometry", jsonString(drm::geometryCoderName(s.geometry)));
+    field("vertex_numbering", jsonString(s.mortonNumbering ? "morton" : "geometry"));
     field("refine_bits", std::to_string(s.refineBits));
     field("levers", "{\"topological_filter\": " + boolean(s.levers.topologicalFilter) +
                         ", \"gap_closing\": " + boolean(s.levers.gapClosing) +
@@ -140,6 +141,7 @@ void printText(const std::string& path, const drm::Stats& s, bool ranks) {
     row("geometry coder", s.refineBits > 0 ? std::string(drm::geometryCoderName(s.geometry)) + " (" +
                                                   std::to_string(s.refineBits) + " low bits)"
                                             : std::string(drm::geometryCoderName(s.geometry)));
+    row("vertex numbering", s.mortonNumbering ? "Morton order" : "the geometry coder's order");
     row("levers", leverList(s.levers));
     row("header bytes", std::to_string(s.headerBytes));
     row("connectivity bytes", bytesAndRate(s.connectivityBytes, s.connectivityBitsPerVertex()));

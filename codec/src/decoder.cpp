@@ -21,6 +21,7 @@
 #include "edge_model.h"
 #include "file_format.h"
 #include "geometry_coders.h"
+#include "morton_order.h"
 #include "progress.h"
 #include "quantize.h"
 #include "rank_coder.h"
@@ -62,6 +63,16 @@ void decodeVertices(Decoding& d) {
                                               d.parts.formatVersion);
     d.result.quantized = std::move(d.vertices.grid);
     d.vertexCount = size_t(d.header.vertexCount);
+    if (d.header.mortonNumbering) {
+        // The connectivity's numbering: the section's points in Morton
+        // order, those on one grid point in the section's order.
+        std::vector<int32_t>& grid = d.result.quantized;
+        const std::vector<uint32_t> order = mortonOrder(grid);
+        std::vector<int32_t> sorted(grid.size());
+        for (size_t v = 0; v < order.size(); ++v)
+            for (int k = 0; k < 3; ++k) sorted[3 * v + k] = grid[3 * size_t(order[v]) + k];
+        grid.swap(sorted);
+    }
 }
 
 // Parts 1 to 3 of the repairs section: the copies join the vertex set (at

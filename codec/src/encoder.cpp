@@ -14,6 +14,7 @@
 #include "file_format.h"
 #include "geometry_coders.h"
 #include "manifold_cut.h"
+#include "morton_order.h"
 #include "mesh_check.h"
 #include "edge_model.h"
 #include "predictor_selection.h"
@@ -41,6 +42,13 @@ constexpr size_t kTryWithoutLeversBelowFaces = 20000;
 // corpus took 7 %, 9 % and 20 % more encoding time for them.
 constexpr size_t kTryStartsBelowFaces = 20000;
 constexpr size_t kFirstVerticesTried = 4;
+// Below this many faces, the connectivity is also coded over the vertex
+// section's order (formats 1 to 8; kFlagSectionNumbering) besides Morton
+// order, and the smaller file kept. Regular meshes break their many ties
+// between equal distances better in the tree's order, a walk over the
+// surface: torus-2k's connectivity took 57 bytes in Morton order, 38 in
+// the tree's.
+constexpr size_t kTrySectionNumberingBelowFaces = 20000;
 
 // What every attempt at one mesh shares, and only reads: the grid, the
 // quantized input and the input cut into manifold pieces.
@@ -75,8 +83,9 @@ struct NumberedMesh {
     GeometryCoder geometryCoder = GeometryCoder::SpanningTree;
     std::vector<uint8_t> geometry;    // the geometry section (Refine: the coarse tree alone)
     int lowBits = 0;                  // Refine: the low bits the refinement codes
-    std::vector<int32_t> fineDecoded; // Refine: the full grid of the vertices, decoded order
-    std::vector<uint32_t> order;      // decoded index -> input index
+    std::vector<int32_t> fineDecoded; // Refine: the full grid of the vertices, connectivity order
+    std::vector<uint32_t> order;      // connectivity index -> input index
+    bool mortonNumbering = true;      // order is Morton order (else the section's: FileHeader)
     std::vector<int32_t> decodedGrid; // decoded order, copies included (Refine: the coarse grid)
     // prepared.triangles over decoded indices; vertices from order.size() on
     // are copies. Only their count is kept, no positions.
@@ -99,6 +108,20 @@ struct ComponentStarts {
     enum class Order { SmallestVertices, InputFaces } order = Order::SmallestVertices;
     uint32_t firstVertex = kNoVertex;
 };
+
+// Writes the attempt's file with the given vertex section. An attempt
+// whose section is not coded yet (encodeBeforeVertexSection) is written
+// with an empty one, then again once it is: attempts over the same vertex
+// section differ only in their other parts, so the smaller of two files is
+// the same either way.
+void writeAttempt(Attempt& attempt, GeometryCoder coder, std::vector<uint8_t> geometry) {
+    attempt.header.geometryCoder = coder;
+    attempt.geometry = std::move(geometry);
+    FileParts written;
+    attempt.encoded.bytes = writeFile(attempt.header, attempt.connectivity, attempt.geometry, attempt.vertexOrder,
+                                      attempt.repairs, {}, &written);
+    fillStatsFromHeader(attempt.encoded.stats, written, attempt.encoded.bytes.size());
+}
 
 // The attempt's quantized and vertexOrder are left empty: only the attempt
 // kept gets them, by move (encodeWithGeometry, encodeConnectivity).
@@ -130,6 +153,7 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
     header.predictor = predictor;
     header.geometryCoder = numbered.geometryCoder;
     header.keepsVertexOrder = options.keepVertexOrder;
+    header.mortonNumbering = numbered.mortonNumbering;
     header.curvature = options.curvature;
     header.levers = options.levers;
     Stats& stats = result.stats;
@@ -246,9 +270,6 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
         secondPass = geometryCoder.encodeAfterConnectivity(numbered.geometry, numbered.fineDecoded, numbered.lowBits,
                                                            triangles);
     }
-    const std::vector<uint8_t>& geometry = geometryCoder.encodeAfterConnectivity ? secondPass : numbered.geometry;
-    FileParts written;
-    result.bytes = writeFile(header, connectivity, geometry, vertexOrder, repairs, {}, &written);
     // The faces as the decoder will give them back (the traversal's own:
     // it is done, and a copy would cost 12 bytes a face at the peak).
     attempt.decodedTriangles = traversal.takeTriangles();
@@ -257,12 +278,11 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
         for (uint32_t& v : attempt.decodedTriangles) v = numbered.order[v];
     attempt.header = header;
     attempt.connectivity = connectivity;
-    attempt.geometry = geometry;
     attempt.vertexOrder = vertexOrder;
     attempt.repairs = repairs;
-
-    fillStatsFromHeader(stats, written, result.bytes.size());
     fillStatsFromTraversal(stats, numbered.lowBits, inDecodedOrder);
+    writeAttempt(attempt, numbered.geometryCoder,
+                 geometryCoder.encodeAfterConnectivity ? std::move(secondPass) : numbered.geometry);
     return attempt;
 }
 
@@ -311,32 +331,28 @@ VertexSection codeVertexSection(const std::vector<int32_t>& quantized, const Enc
     return section;
 }
 
-// Codes the vertex set with the given coder (lowBits > 0: Refine), numbers
-// the cut mesh in its decoded order and encodes the connectivity.
-// `trials` (may be null): what an earlier call worked out on the same grid
-// (refineGeometryEstimate's trees). `given` (may be null): the vertex
-// section already coded for this attempt (codeVertexSection), taken.
-Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
-                           const EncodeOptions& options, int lowBits, ProgressReporter& progress,
-                           GeometryTreeTrials* trials = nullptr, VertexSection* given = nullptr) {
-    progress.stage("coding vertices", 0.01);
-    NumberedMesh numbered;
-    numbered.lowBits = lowBits;
-    std::vector<int32_t> coarse = lowBits > 0 ? coarsenGrid(prepared.quantized, lowBits) : std::vector<int32_t>();
-    const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : prepared.quantized;
-    VertexSection section =
-        given ? std::move(*given) : codeVertexSection(prepared.quantized, options, options.geometry, lowBits, trials);
-    const GeometryCoderEntry* coder = section.coder;
-    GeometryEncoding& encoding = section.encoding;
-    numbered.geometryCoder = coder->id;
-    numbered.geometry = std::move(encoding.bytes);
-    numbered.order = std::move(encoding.order);
-    if (lowBits > 0) {
-        numbered.fineDecoded.resize(3 * numbered.order.size());
-        for (size_t d = 0; d < numbered.order.size(); ++d)
-            for (int k = 0; k < 3; ++k)
-                numbered.fineDecoded[3 * d + k] = prepared.quantized[3 * size_t(numbered.order[d]) + k];
-    }
+// Format 9's numbering of the vertices for the connectivity (morton_order.h):
+// sectionOrder (decoded index -> input index) sorted stably by the Morton
+// keys of the points of vertexGrid (input order). Returns connectivity
+// index -> input index.
+std::vector<uint32_t> connectivityOrder(const std::vector<int32_t>& vertexGrid,
+                                        const std::vector<uint32_t>& sectionOrder) {
+    std::vector<int32_t> inSectionOrder(3 * sectionOrder.size());
+    for (size_t d = 0; d < sectionOrder.size(); ++d)
+        for (int k = 0; k < 3; ++k) inSectionOrder[3 * d + k] = vertexGrid[3 * size_t(sectionOrder[d]) + k];
+    const std::vector<uint32_t> sorted = mortonOrder(inSectionOrder);
+    std::vector<uint32_t> order(sorted.size());
+    for (size_t i = 0; i < sorted.size(); ++i) order[i] = sectionOrder[sorted[i]];
+    return order;
+}
+
+// Numbers the cut mesh in numbered.order (connectivity index -> input
+// index; the caller sets it and the vertex section's fields), over the
+// points of vertexGrid (input order), and encodes the connectivity from
+// every start tried, and without levers where that is tried.
+Attempt encodeNumbered(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
+                       const EncodeOptions& options, NumberedMesh& numbered, const std::vector<int32_t>& vertexGrid,
+                       ProgressReporter& progress) {
     const size_t copies = cut.copyOf.size();
     numbered.vertexCount = mesh.vertexCount() + copies;
     {
@@ -371,7 +387,6 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
         numbered.triangles.resize(triangles.size());
         for (size_t c = 0; c < triangles.size(); ++c) numbered.triangles[c] = decodedIndex[triangles[c]];
     }
-    std::vector<int32_t>().swap(coarse);  // in decodedGrid now
     {
         checkIndices(numbered.triangles, numbered.vertexCount);
         if (prepared.codableAsGiven) {
@@ -436,6 +451,67 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
     return best;
 }
 
+// Codes the vertex set with the given coder (lowBits > 0: Refine), numbers
+// the cut mesh for the connectivity and encodes it.
+// `trials` (may be null): what an earlier call worked out on the same grid
+// (refineGeometryEstimate's trees). `given` (may be null): the vertex
+// section already coded for this attempt (codeVertexSection), taken.
+// `encodedBefore` (may be null; lowBits 0 only): the connectivity coded
+// before the vertex section was (encodeBeforeVertexSection), taken.
+Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
+                           const EncodeOptions& options, int lowBits, ProgressReporter& progress,
+                           GeometryTreeTrials* trials = nullptr, VertexSection* given = nullptr,
+                           Attempt* encodedBefore = nullptr) {
+    progress.stage("coding vertices", 0.01);
+    VertexSection section =
+        given ? std::move(*given) : codeVertexSection(prepared.quantized, options, options.geometry, lowBits, trials);
+    const std::vector<int32_t> coarse = lowBits > 0 ? coarsenGrid(prepared.quantized, lowBits) : std::vector<int32_t>();
+    const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : prepared.quantized;
+    // Small meshes also try the section's numbering (see kTrySectionNumberingBelowFaces).
+    const bool trySectionNumbering = options.searchStarts && prepared.triangles->size() / 3 < kTrySectionNumberingBelowFaces;
+    auto encodeInOrder = [&](std::vector<uint32_t> order, bool morton) {
+        NumberedMesh numbered;
+        numbered.lowBits = lowBits;
+        numbered.geometryCoder = section.coder->id;
+        numbered.geometry = trySectionNumbering ? section.encoding.bytes : std::move(section.encoding.bytes);
+        numbered.order = std::move(order);
+        numbered.mortonNumbering = morton;
+        if (lowBits > 0) {
+            numbered.fineDecoded.resize(3 * numbered.order.size());
+            for (size_t d = 0; d < numbered.order.size(); ++d)
+                for (int k = 0; k < 3; ++k)
+                    numbered.fineDecoded[3 * d + k] = prepared.quantized[3 * size_t(numbered.order[d]) + k];
+        }
+        return encodeNumbered(mesh, prepared, cut, options, numbered, vertexGrid, progress);
+    };
+    if (section.coder->keepsInputOrder) return encodeInOrder(std::move(section.encoding.order), false);
+    Attempt best;
+    if (encodedBefore) {
+        writeAttempt(*encodedBefore, section.coder->id, section.encoding.bytes);
+        best = std::move(*encodedBefore);
+    } else {
+        best = encodeInOrder(connectivityOrder(vertexGrid, section.encoding.order), true);
+    }
+    if (trySectionNumbering) {
+        Attempt alternative = encodeInOrder(std::move(section.encoding.order), false);
+        if (alternative.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(alternative);
+    }
+    return best;
+}
+
+// The connectivity of a mesh whose points all lie on distinct grid points,
+// coded before its vertex section: its numbering (format 9, Morton order)
+// does not depend on the order the vertex coder gives. `order`:
+// mortonOrder of the quantized points. The file is written with an empty
+// vertex section until encodeWithGeometry adds the section.
+Attempt encodeBeforeVertexSection(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
+                                  const EncodeOptions& options, ProgressReporter& progress,
+                                  std::vector<uint32_t> order) {
+    NumberedMesh numbered;
+    numbered.order = std::move(order);
+    return encodeNumbered(mesh, prepared, cut, options, numbered, prepared.quantized, progress);
+}
+
 // GeometryCoder::Auto: the tree, and where it spends more than
 // kAutoRefineAboveBitsPerVertex also refine with kAutoRefineLowBits (drm.h);
 // refine is kept where its file is at least kAutoRefineMinimumGainPercent
@@ -447,6 +523,10 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
 // 2 the rest (genus3 -11 %); trying 1..5 finds little more for three times
 // the work.
 constexpr double kRefineMinimumGain = kAutoRefineMinimumGainPercent / 100.0;
+// Meshes this small decode in well under a millisecond either way: refine
+// is kept wherever it is smaller (star-cgal, 14 vertices: 125 bytes with
+// refine against the tree's 128, 2.3 % smaller).
+constexpr size_t kRefineAnyGainBelowVertices = 1000;
 
 // Where the coarse grid leaves nearest neighbours at most this many coarse
 // steps apart (the spacing the geometry tree measures), the connectivity
@@ -503,16 +583,20 @@ size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::
 
 // `section`: the tree's vertex section on the full grid when the caller
 // has coded it already (encodeConnectivity), else coded here.
+// `encodedBefore` (may be null): the tree attempt's connectivity, coded
+// before its section (encodeBeforeVertexSection), taken.
 Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
-                                 const EncodeOptions& options, ProgressReporter& progress, VertexSection section) {
+                                 const EncodeOptions& options, ProgressReporter& progress, VertexSection section,
+                                 Attempt* encodedBefore) {
     EncodeOptions tree = options;
     tree.geometry = GeometryCoder::SpanningTree;
     if (!section.coder) section = codeVertexSection(prepared.quantized, tree, tree.geometry, 0, nullptr);
     const size_t treeGeometry = section.encoding.bytes.size();
     const double treeBits = 8.0 * double(treeGeometry) / double(std::max<size_t>(1, mesh.vertexCount()));
     if (treeBits <= kAutoRefineAboveBitsPerVertex)
-        return encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section);
+        return encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, encodedBefore);
     const double slack = kRefineEstimateSlack * double(treeGeometry);
+    const double minimumGain = mesh.vertexCount() < kRefineAnyGainBelowVertices ? 0.0 : kRefineMinimumGain;
     // Refine's estimates (refineGeometryEstimate), one per low-bit count:
     // they need the tree's vertex section only, not its attempt, so they
     // may run beside it.
@@ -532,7 +616,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     // of it: the estimate spares the whole attempt elsewhere (venus,
     // casting, anchor). It stops as soon as it must exceed skipAbove.
     auto estimate = [&](Estimate& e, double treeTotal) {
-        const double skipAbove = double(treeGeometry) + slack - kRefineMinimumGain * treeTotal;
+        const double skipAbove = double(treeGeometry) + slack - minimumGain * treeTotal;
         e.bytes = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, e.lowBits, options.index,
                                          e.trials, skipAbove);
     };
@@ -549,12 +633,12 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         for (Estimate& e : estimates)
             estimating.push_back(startBeside([&estimate, &e, treeGeometry] { estimate(e, double(treeGeometry)); }));
     }
-    Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section);
+    Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, encodedBefore);
     const size_t treeTotal = best.encoded.bytes.size();
     for (std::future<void>& running : estimating) running.get();
     if (estimating.empty())
         for (Estimate& e : estimates) estimate(e, double(treeTotal));
-    const double worthIt = (1.0 - kRefineMinimumGain) * double(treeTotal);
+    const double worthIt = (1.0 - minimumGain) * double(treeTotal);
     EncodeOptions refine = options;
     refine.geometry = GeometryCoder::Refine;
     for (Estimate& e : estimates) {
@@ -565,7 +649,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         const double growth = trials.nearest && trials.nearest->spacing <= kCrowdedCoarseSpacing
                                   ? kCrowdedConnectivityGrowth * double(mesh.vertexCount()) / 8.0
                                   : 0.0;
-        if (double(treeGeometry) + slack - double(e.bytes) - growth < kRefineMinimumGain * double(treeTotal)) continue;
+        if (double(treeGeometry) + slack - double(e.bytes) - growth < minimumGain * double(treeTotal)) continue;
         Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, e.lowBits, progress, &trials);
         if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
             best = std::move(refined);
@@ -647,20 +731,36 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     prepared.repairs.duplicateOf = std::move(cut.duplicateOf);
     prepared.repairs.duplicateReversed = std::move(cut.duplicateReversed);
 
+    // While the vertex section is coded on the second thread, the first
+    // attempt's connectivity can be coded here where the numbering does not
+    // wait for it: on the full grid (not Refine's coarse one), where no two
+    // points share a grid point (format 9, morton_order.h).
+    Attempt encodedBefore;
+    bool connectivityCoded = false;
+    if (firstSectionCoding.valid() && firstLowBits == 0 && !geometryCoderOf(firstCoder)->keepsInputOrder) {
+        std::vector<uint32_t> order = mortonOrder(prepared.quantized);
+        if (!hasCoincidentPoints(prepared.quantized, order)) {
+            EncodeOptions first = options;
+            first.geometry = firstCoder;
+            encodedBefore = encodeBeforeVertexSection(mesh, prepared, cut, first, progress, std::move(order));
+            connectivityCoded = true;
+        }
+    }
     if (firstSectionCoding.valid()) firstSection = firstSectionCoding.get();
     VertexSection* given = firstSection.coder ? &firstSection : nullptr;
+    Attempt* before = connectivityCoded ? &encodedBefore : nullptr;
     Attempt best;
     if (options.geometry == GeometryCoder::Auto) {
-        best = encodeWithChosenGeometry(mesh, prepared, cut, options, progress, std::move(firstSection));
+        best = encodeWithChosenGeometry(mesh, prepared, cut, options, progress, std::move(firstSection), before);
     } else if (options.geometry != GeometryCoder::Refine || options.refineBits > 0) {
-        best = encodeWithGeometry(mesh, prepared, cut, options, firstLowBits, progress, nullptr, given);
+        best = encodeWithGeometry(mesh, prepared, cut, options, firstLowBits, progress, nullptr, given, before);
     } else {
         // Refine with the low bits left to the encoder: the spanning tree alone,
         // and 1 .. kMaxTriedRefineBits low bits (the sizes are not unimodal in
         // the low bits: plane-holes grows at 1 and 2, shrinks at 3 to 5).
         EncodeOptions tree = options;
         tree.geometry = GeometryCoder::SpanningTree;
-        best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, given);
+        best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, given, before);
         for (int lowBits = 1; lowBits <= std::min(kMaxTriedRefineBits, options.bits - 1); ++lowBits) {
             Attempt refined = encodeWithGeometry(mesh, prepared, cut, options, lowBits, progress);
             if (refined.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(refined);

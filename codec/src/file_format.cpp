@@ -42,7 +42,8 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
                      (h.levers.confidenceContext ? kFlagConfidenceContext : 0) |
                      (h.levers.angleOrder ? kFlagAngleOrder : 0) | (h.keepsVertexOrder ? kFlagVertexOrder : 0) |
                      (h.hasRepairs ? kFlagRepairs : 0) | (h.attributeSections > 0 ? kFlagAttributes : 0) |
-                     (h.levers.frontNeighbours ? kFlagFrontNeighbours : 0)));
+                     (h.levers.frontNeighbours ? kFlagFrontNeighbours : 0) |
+                     (h.mortonNumbering ? 0 : kFlagSectionNumbering)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
     out.u8(uint8_t(h.connectivityCoder));
@@ -60,7 +61,8 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
 FileHeader decodeHeader(ByteReader& in, int version) {
     FileHeader h;
     const uint16_t flags = in.u16("flags");
-    if (flags & ~(version >= 5 ? kKnownFlags : kKnownFlagsBefore5)) throw Error(ErrorKind::Corrupt, "corrupt file: unknown header flags " + std::to_string(flags));
+    const uint16_t known = version >= 9 ? kKnownFlags : version >= 5 ? kKnownFlagsBefore9 : kKnownFlagsBefore5;
+    if (flags & ~known) throw Error(ErrorKind::Corrupt, "corrupt file: unknown header flags " + std::to_string(flags));
     h.curvature = (flags & kFlagCurvature) != 0;
     h.levers.topologicalFilter = (flags & kFlagTopologicalFilter) != 0;
     h.levers.gapClosing = (flags & kFlagGapClosing) != 0;
@@ -69,6 +71,7 @@ FileHeader decodeHeader(ByteReader& in, int version) {
     h.levers.frontNeighbours = (flags & kFlagFrontNeighbours) != 0;
     h.keepsVertexOrder = (flags & kFlagVertexOrder) != 0;
     h.hasRepairs = (flags & kFlagRepairs) != 0;
+    h.mortonNumbering = version >= kFirstFormatWithMortonNumbering && !(flags & kFlagSectionNumbering);
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
         throw Error(ErrorKind::Corrupt, "corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range " +

@@ -13,6 +13,9 @@
 namespace drm {
 
 constexpr int kFirstFormatWithStartsInConnectivity = 8;
+// From 9 the connectivity numbers the vertices in Morton order of their
+// grid points (morton_order.h), and the decoder gives them in that order.
+constexpr int kFirstFormatWithMortonNumbering = 9;
 
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
 constexpr uint16_t kFormatVersion = kFileFormatVersion;  // written; read: drm.h's readable range
@@ -28,8 +31,12 @@ constexpr uint16_t kFlagVertexOrder = 32;  // a fourth section holds the input v
 constexpr uint16_t kFlagRepairs = 64;      // a repairs section undoes a manifold cut (repair_section.h)
 constexpr uint16_t kFlagAttributes = 128;  // attribute sections follow (attribute_sections.h)
 constexpr uint16_t kFlagFrontNeighbours = 256;  // format 5 on
+// Format 9 on: the connectivity numbers the vertices in the vertex
+// section's order, as formats 1 to 8 did, instead of Morton order.
+constexpr uint16_t kFlagSectionNumbering = 512;
 constexpr uint16_t kKnownFlagsBefore5 = 255;
-constexpr uint16_t kKnownFlags = 511;
+constexpr uint16_t kKnownFlagsBefore9 = 511;
+constexpr uint16_t kKnownFlags = 1023;
 constexpr uint64_t kMaxAttributeSections = 32;
 
 struct FileHeader {
@@ -39,6 +46,10 @@ struct FileHeader {
     Predictor predictor = Predictor::Midpoint;
     bool curvature = false;
     bool keepsVertexOrder = false;
+    // Format 9 on: the connectivity's vertices in Morton order of their
+    // grid points (morton_order.h), or else in the vertex section's order
+    // (kFlagSectionNumbering; formats 1 to 8 always).
+    bool mortonNumbering = true;
     Levers levers;
     ConnectivityCoder connectivityCoder = ConnectivityCoder::RankRangeCoder;
     GeometryCoder geometryCoder = GeometryCoder::SpanningTree;

@@ -88,7 +88,7 @@ int noRefineBits(const uint8_t*, size_t, int) { return 0; }
 // points, and they to raw bits (tiny sets, whose lengths cost more than
 // the gaps save).
 const GeometryCoderEntry kCoders[] = {
-    {GeometryCoder::Raw, "raw", encodeRaw, nullptr, decodeRaw, noRefineBits, nullptr, nullptr},
+    {GeometryCoder::Raw, "raw", encodeRaw, nullptr, decodeRaw, noRefineBits, nullptr, nullptr, 0.0, true},
     {GeometryCoder::SpanningTree, "tree", encodeTree, &kCoders[3], decodeTree, noRefineBits, nullptr, nullptr},
     // Refine's own fallback, the spanning tree alone, is one of the low-bit
     // counts the encoder tries (encodeConnectivity), not a section swap.

@@ -63,6 +63,10 @@ struct GeometryCoderEntry {
     // As a fallback, tried only where the section it would replace spends
     // at least this many bits a vertex (0: always).
     double triedFromBitsPerVertex = 0;
+    // Its decoded order is the input's (raw bits): the connectivity then
+    // keeps that numbering (kFlagSectionNumbering), so that decode() gives
+    // the vertices back in input order, as documented for this coder.
+    bool keepsInputOrder = false;
 };
 
 // nullptr for an id no coder has (file_format refuses the file as

@@ -7,6 +7,7 @@
 #include "common.h"
 #include "drm/drm.h"
 #include "morton.h"
+#include "morton_order.h"
 #include "range_coder.h"
 #include "rank_coder.h"
 
@@ -26,20 +27,17 @@ std::vector<uint8_t> encodeSortedPoints(const std::vector<int32_t>& grid, int bi
     if (bits < 1 || bits > kMaxQuantizationBits)
         throw Error(ErrorKind::Internal, "internal error: sorted points at " + std::to_string(bits) + " bits");
     const size_t n = grid.size() / 3;
-    std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
-    for (size_t v = 0; v < n; ++v) keyed[v] = {mortonKeyOf(&grid[3 * v]), uint32_t(v)};
-    std::sort(keyed.begin(), keyed.end());
-    order.resize(n);
+    order = mortonOrder(grid);
     RangeEncoder coder;
     AdaptiveFrequencies lengths = lengthModel();
     uint64_t previous = 0;
     for (size_t d = 0; d < n; ++d) {
-        order[d] = keyed[d].second;
-        const uint64_t w = keyed[d].first - previous + 1;
+        const uint64_t key = mortonKeyOf(&grid[3 * size_t(order[d])]);
+        const uint64_t w = key - previous + 1;
         const int length = bitLength(w);
         lengths.encode(coder, uint32_t(length - 1));
         coder.encodeWideBits(w, length - 1);
-        previous = keyed[d].first;
+        previous = key;
     }
     return coder.finish();
 }

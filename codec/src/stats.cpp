@@ -14,6 +14,7 @@ void fillStatsFromHeader(Stats& stats, const FileParts& parts, size_t fileSize) 
     stats.curvature = header.curvature;
     stats.levers = header.levers;
     stats.geometry = header.geometryCoder;
+    stats.mortonNumbering = header.mortonNumbering;
     stats.headerBytes = parts.headerBytes;
     stats.connectivityBytes = parts.connectivitySize;
     stats.geometryBytes = parts.geometrySize;

@@ -7,8 +7,8 @@
 // candidates from the predictor's ball; v4/: before format 5's front
 // neighbours; v5/: before format 6's sign contexts; v6/: before format 7's
 // frame along the walk and tangent signs; v7/: before format 8's start
-// triangles in the connectivity section), so the decoder keeps reading what
-// users already have.
+// triangles in the connectivity section; v8/: before format 9's Morton
+// numbering), so the decoder keeps reading what users already have.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -84,6 +84,17 @@ TEST(GoldenFormat5, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine
 TEST(GoldenFormat5, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v5", 5); }
 // Format 7's files, as its last encoder (c1bfbba) wrote them: the start
 // triangles in the header, three varints each.
+// Format 8's files, as its last encoder (ba39120) wrote them: the
+// connectivity numbers the vertices in the vertex section's order.
+TEST(GoldenFormat8, Torus) { expectDecodesToGolden("torus", "/v8", 8); }
+TEST(GoldenFormat8, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v8", 8); }
+TEST(GoldenFormat8, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v8", 8); }
+TEST(GoldenFormat8, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v8", 8); }
+TEST(GoldenFormat8, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v8", 8); }
+TEST(GoldenFormat8, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v8", 8); }
+TEST(GoldenFormat8, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres", "/v8", 8); }
+TEST(GoldenFormat8, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine", "/v8", 8); }
+
 TEST(GoldenFormat7, Torus) { expectDecodesToGolden("torus", "/v7", 7); }
 TEST(GoldenFormat7, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v7", 7); }
 TEST(GoldenFormat7, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v7", 7); }
@@ -123,11 +134,35 @@ TEST(GoldenFormat4, FrontNeighbourFlagIsRefused) {
     }
     // The same file as written, and format 5's and today's with the flag, decode.
     EXPECT_NO_THROW(drm::decode(file));
-    for (const char* folder : {"/v5", "/v6", "/v7", ""}) {
+    for (const char* folder : {"/v5", "/v6", "/v7", "/v8", ""}) {
         const std::vector<uint8_t> later =
             drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + folder + "/blobby-3cc.drm");
         ASSERT_TRUE(drm_test::parseSections(later, &sections));
         EXPECT_EQ(drm_test::payloadsOf(later, sections)[0][1] & 1, 1) << folder;
+    }
+}
+
+// Header flag bit 9 (the connectivity in the vertex section's order)
+// exists from format 9 on: a format 8 file that sets it is refused. Today's
+// files set it where they keep that order (raw bits) and not elsewhere.
+TEST(GoldenFormat8, SectionNumberingFlagIsRefused) {
+    const std::vector<uint8_t> file = drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + "/v8/bunny-lres.drm");
+    std::vector<drm_test::SectionSpan> sections;
+    ASSERT_TRUE(drm_test::parseSections(file, &sections));
+    std::vector<uint8_t> header = drm_test::payloadsOf(file, sections)[0];
+    EXPECT_EQ(header[1] & 2, 0);
+    header[1] |= 2;  // flags, u16 little-endian: bit 9 is the high byte's bit 1
+    try {
+        drm::decode(drm_test::withPayload(file, 0, header));
+        ADD_FAILURE() << "a format 8 file with flag bit 9 decoded";
+    } catch (const drm::Error& e) {
+        EXPECT_EQ(e.kind(), drm::ErrorKind::Corrupt) << e.what();
+        EXPECT_NE(std::string(e.what()).find("unknown header flags"), std::string::npos) << e.what();
+    }
+    for (const char* name : {"star-raw", "bunny-lres"}) {
+        const std::vector<uint8_t> today = drm::vcgio::readFileBytes(std::string(DRM_GOLDEN_DIR) + "/" + name + ".drm");
+        ASSERT_TRUE(drm_test::parseSections(today, &sections));
+        EXPECT_EQ((drm_test::payloadsOf(today, sections)[0][1] & 2) != 0, std::string(name) == "star-raw") << name;
     }
 }
 

@@ -109,7 +109,7 @@ def mesh_files():
 
 
 INFO_KEYS = {"vertices", "faces", "components", "boundary_edges", "bits", "predictor", "curvature", "geometry",
-             "refine_bits", "levers", "header_bytes", "connectivity_bytes", "geometry_bytes", "vertex_order_bytes",
+             "refine_bits", "vertex_numbering", "levers", "header_bytes", "connectivity_bytes", "geometry_bytes", "vertex_order_bytes",
              "attribute_bytes", "welded_vertices", "attributes", "total_bytes", "connectivity_bpv", "geometry_bpv",
              "attribute_bpv", "total_bpv", "rank_histogram"}
 

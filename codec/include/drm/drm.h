@@ -76,9 +76,9 @@ constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
-constexpr int kFileFormatVersion = 8;
+constexpr int kFileFormatVersion = 9;
 constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 8;
+constexpr int kNewestReadableFormatVersion = 9;
 
 // The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
 // MeshLab rank filter, README's legend): bucket 0 is a component's start
@@ -320,6 +320,11 @@ struct Stats {
     Levers levers;
     GeometryCoder geometry = GeometryCoder::SpanningTree;
     int refineBits = 0;             // low bits coded by the refinement (GeometryCoder::Refine)
+    // The connectivity's vertex numbering, which is also the decoded
+    // vertex order (without keepVertexOrder): Morton order of the grid
+    // points (format 9), or the geometry coder's own order (formats 1 to
+    // 8; from 9 the raw coder's, and small meshes' where it codes smaller).
+    bool mortonNumbering = false;
     uint64_t headerBytes = 0;
     uint64_t connectivityBytes = 0;
     uint64_t geometryBytes = 0;
@@ -374,9 +379,10 @@ struct Encoded {
     Grid grid;
     // Quantized input positions (3 per vertex, input vertex order).
     std::vector<int32_t> quantized;
-    // vertexOrder[i] = input vertex index of decoded vertex i. The geometry
-    // coder chooses the decoded order; the raw coder and keepVertexOrder
-    // give the input order (identity).
+    // vertexOrder[i] = input vertex index of decoded vertex i. The decoded
+    // order is Morton order of the grid points, or the geometry coder's
+    // (Stats::mortonNumbering); the raw coder and keepVertexOrder give the
+    // input order (identity).
     std::vector<uint32_t> vertexOrder;
     // For each input face, the rank code that created it (>= 1), or 0 for a
     // component's start triangle, which is stored as vertex gaps, not ranked,
