@@ -46,7 +46,7 @@ const char* const kEncodeHelp =
     "                    predicted across the decoded triangles (docs/format.md);\n"
     "                    auto codes the tree, and where it costs over {auto-refine-above} bits per\n"
     "                    vertex also refine with {auto-refine-low-bits} low bits, kept where {auto-refine-gain} %\n"
-    "                    smaller (it decodes 20-30 % slower)\n"
+    "                    smaller (it decodes 20-30 % slower; under 1000 vertices, any gain)\n"
     "  --refine-bits K   low bits the refine coder codes, {refine-bits} (default: tries {tried-refine-bits}\n"
     "                    and the tree alone, keeps the smallest)\n"
     "  --levers L        additions to the paper's method: all (default), none, or\n"

@@ -70,10 +70,11 @@ struct PreparedMesh {
     bool codableAsGiven = false;
 };
 
-// One attempt's numbering: the geometry section, the decoded vertex order it
-// gives and the faces renumbered into it, with their topology and the
-// predictor. Connectivity is coded over the renumbered faces, because ties
-// between equal distances are broken by the indices the decoder will see.
+// One attempt's numbering: the geometry section, the connectivity's vertex
+// order (Morton order or the section's, format 9) and the faces renumbered
+// into it, with their topology and the predictor. Connectivity is coded
+// over the renumbered faces, because ties between equal distances are
+// broken by the indices the decoder will see.
 // Never copied or moved: topology points into triangles.
 struct NumberedMesh {
     NumberedMesh() = default;
@@ -109,11 +110,19 @@ struct ComponentStarts {
     uint32_t firstVertex = kNoVertex;
 };
 
+// The first attempt's connectivity, coded while its vertex section is
+// (encodeBeforeVertexSection), and the numbering it was coded in.
+struct EarlyConnectivity {
+    Attempt attempt;
+    std::vector<uint32_t> order;  // connectivity index -> input index
+    bool certain = false;         // no two points coincide: order is the section's numbering
+};
+
 // Writes the attempt's file with the given vertex section. An attempt
-// whose section is not coded yet (encodeBeforeVertexSection) is written
-// with an empty one, then again once it is: attempts over the same vertex
-// section differ only in their other parts, so the smaller of two files is
-// the same either way.
+// whose section is not coded yet (encodeBeforeVertexSection; lowBits 0, so
+// no second pass) is written with an empty one, then again once it is:
+// attempts over the same vertex section differ only in their other parts,
+// so the smaller of two files is the same either way.
 void writeAttempt(Attempt& attempt, GeometryCoder coder, std::vector<uint8_t> geometry) {
     attempt.header.geometryCoder = coder;
     attempt.geometry = std::move(geometry);
@@ -356,7 +365,7 @@ Attempt encodeNumbered(const Mesh& mesh, const PreparedMesh& prepared, const Man
     const size_t copies = cut.copyOf.size();
     numbered.vertexCount = mesh.vertexCount() + copies;
     {
-        // Decoded indices: the geometry coder's order, then the copies in the
+        // Decoded indices: the connectivity's numbering, then the copies in the
         // cut's order (each at its original's position). Freed once the faces
         // are renumbered (4 bytes a vertex at the traversal's peak).
         std::vector<uint32_t> decodedIndex(numbered.vertexCount);
@@ -456,12 +465,13 @@ Attempt encodeNumbered(const Mesh& mesh, const PreparedMesh& prepared, const Man
 // `trials` (may be null): what an earlier call worked out on the same grid
 // (refineGeometryEstimate's trees). `given` (may be null): the vertex
 // section already coded for this attempt (codeVertexSection), taken.
-// `encodedBefore` (may be null; lowBits 0 only): the connectivity coded
-// before the vertex section was (encodeBeforeVertexSection), taken.
+// `early` (may be null; lowBits 0 only): the connectivity coded before the
+// vertex section was (encodeBeforeVertexSection); its attempt is taken
+// where its numbering is the section's, and freed either way.
 Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
                            const EncodeOptions& options, int lowBits, ProgressReporter& progress,
                            GeometryTreeTrials* trials = nullptr, VertexSection* given = nullptr,
-                           Attempt* encodedBefore = nullptr) {
+                           EarlyConnectivity* early = nullptr) {
     progress.stage("coding vertices", 0.01);
     VertexSection section =
         given ? std::move(*given) : codeVertexSection(prepared.quantized, options, options.geometry, lowBits, trials);
@@ -484,32 +494,47 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
         }
         return encodeNumbered(mesh, prepared, cut, options, numbered, vertexGrid, progress);
     };
-    if (section.coder->keepsInputOrder) return encodeInOrder(std::move(section.encoding.order), false);
-    Attempt best;
-    if (encodedBefore) {
-        writeAttempt(*encodedBefore, section.coder->id, section.encoding.bytes);
-        best = std::move(*encodedBefore);
-    } else {
-        best = encodeInOrder(connectivityOrder(vertexGrid, section.encoding.order), true);
+    if (section.coder->keepsInputOrder) {
+        if (early) *early = EarlyConnectivity();
+        return encodeInOrder(std::move(section.encoding.order), false);
     }
-    if (trySectionNumbering) {
+    Attempt best;
+    // The early attempt's numbering is the one this section gives wherever
+    // no two points coincide; elsewhere it is compared.
+    std::vector<uint32_t> order;
+    if (!early || !early->certain) order = connectivityOrder(vertexGrid, section.encoding.order);
+    if (early && (early->certain || early->order == order)) {
+        writeAttempt(early->attempt, section.coder->id, section.encoding.bytes);
+        best = std::move(early->attempt);
+        order = std::move(early->order);
+    } else {
+        best = encodeInOrder(order, true);
+    }
+    if (early) *early = EarlyConnectivity();
+    // Sorted points come in Morton order already: nothing else to try.
+    if (trySectionNumbering && order != section.encoding.order) {
         Attempt alternative = encodeInOrder(std::move(section.encoding.order), false);
         if (alternative.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(alternative);
     }
     return best;
 }
 
-// The connectivity of a mesh whose points all lie on distinct grid points,
-// coded before its vertex section: its numbering (format 9, Morton order)
-// does not depend on the order the vertex coder gives. `order`:
-// mortonOrder of the quantized points. The file is written with an empty
-// vertex section until encodeWithGeometry adds the section.
-Attempt encodeBeforeVertexSection(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
-                                  const EncodeOptions& options, ProgressReporter& progress,
-                                  std::vector<uint32_t> order) {
+// The first attempt's connectivity, coded before its vertex section
+// (encodeConnectivity) in the numbering that section will most likely give:
+// Morton order (format 9), points on one grid point in input order. Where
+// no two points coincide, that is certain; elsewhere the order the vertex
+// coder gives such points decides, and encodeWithGeometry compares.
+// The file is written with an empty vertex section until encodeWithGeometry
+// adds the section.
+EarlyConnectivity encodeBeforeVertexSection(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
+                                            const EncodeOptions& options, ProgressReporter& progress) {
+    EarlyConnectivity early;
+    early.order = mortonOrder(prepared.quantized);
+    early.certain = !hasCoincidentPoints(prepared.quantized, early.order);
     NumberedMesh numbered;
-    numbered.order = std::move(order);
-    return encodeNumbered(mesh, prepared, cut, options, numbered, prepared.quantized, progress);
+    numbered.order = early.order;
+    early.attempt = encodeNumbered(mesh, prepared, cut, options, numbered, prepared.quantized, progress);
+    return early;
 }
 
 // GeometryCoder::Auto: the tree, and where it spends more than
@@ -583,18 +608,18 @@ size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::
 
 // `section`: the tree's vertex section on the full grid when the caller
 // has coded it already (encodeConnectivity), else coded here.
-// `encodedBefore` (may be null): the tree attempt's connectivity, coded
-// before its section (encodeBeforeVertexSection), taken.
+// `early` (may be null): the tree attempt's connectivity, coded before its
+// section (encodeBeforeVertexSection).
 Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
                                  const EncodeOptions& options, ProgressReporter& progress, VertexSection section,
-                                 Attempt* encodedBefore) {
+                                 EarlyConnectivity* early) {
     EncodeOptions tree = options;
     tree.geometry = GeometryCoder::SpanningTree;
     if (!section.coder) section = codeVertexSection(prepared.quantized, tree, tree.geometry, 0, nullptr);
     const size_t treeGeometry = section.encoding.bytes.size();
     const double treeBits = 8.0 * double(treeGeometry) / double(std::max<size_t>(1, mesh.vertexCount()));
     if (treeBits <= kAutoRefineAboveBitsPerVertex)
-        return encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, encodedBefore);
+        return encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, early);
     const double slack = kRefineEstimateSlack * double(treeGeometry);
     const double minimumGain = mesh.vertexCount() < kRefineAnyGainBelowVertices ? 0.0 : kRefineMinimumGain;
     // Refine's estimates (refineGeometryEstimate), one per low-bit count:
@@ -633,7 +658,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         for (Estimate& e : estimates)
             estimating.push_back(startBeside([&estimate, &e, treeGeometry] { estimate(e, double(treeGeometry)); }));
     }
-    Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, encodedBefore);
+    Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, early);
     const size_t treeTotal = best.encoded.bytes.size();
     for (std::future<void>& running : estimating) running.get();
     if (estimating.empty())
@@ -732,23 +757,19 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     prepared.repairs.duplicateReversed = std::move(cut.duplicateReversed);
 
     // While the vertex section is coded on the second thread, the first
-    // attempt's connectivity can be coded here where the numbering does not
-    // wait for it: on the full grid (not Refine's coarse one), where no two
-    // points share a grid point (format 9, morton_order.h).
-    Attempt encodedBefore;
-    bool connectivityCoded = false;
+    // attempt's connectivity is coded here, in the numbering the section
+    // will give (format 9, morton_order.h): on the full grid (not Refine's
+    // coarse one), for a coder that does not keep the input's order.
+    EarlyConnectivity early;
+    EarlyConnectivity* before = nullptr;
     if (firstSectionCoding.valid() && firstLowBits == 0 && !geometryCoderOf(firstCoder)->keepsInputOrder) {
-        std::vector<uint32_t> order = mortonOrder(prepared.quantized);
-        if (!hasCoincidentPoints(prepared.quantized, order)) {
-            EncodeOptions first = options;
-            first.geometry = firstCoder;
-            encodedBefore = encodeBeforeVertexSection(mesh, prepared, cut, first, progress, std::move(order));
-            connectivityCoded = true;
-        }
+        EncodeOptions first = options;
+        first.geometry = firstCoder;
+        early = encodeBeforeVertexSection(mesh, prepared, cut, first, progress);
+        before = &early;
     }
     if (firstSectionCoding.valid()) firstSection = firstSectionCoding.get();
     VertexSection* given = firstSection.coder ? &firstSection : nullptr;
-    Attempt* before = connectivityCoded ? &encodedBefore : nullptr;
     Attempt best;
     if (options.geometry == GeometryCoder::Auto) {
         best = encodeWithChosenGeometry(mesh, prepared, cut, options, progress, std::move(firstSection), before);

@@ -82,8 +82,6 @@ TEST(GoldenFormat5, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden(
 TEST(GoldenFormat5, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v5", 5); }
 TEST(GoldenFormat5, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v5", 5); }
 TEST(GoldenFormat5, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v5", 5); }
-// Format 7's files, as its last encoder (c1bfbba) wrote them: the start
-// triangles in the header, three varints each.
 // Format 8's files, as its last encoder (ba39120) wrote them: the
 // connectivity numbers the vertices in the vertex section's order.
 TEST(GoldenFormat8, Torus) { expectDecodesToGolden("torus", "/v8", 8); }
@@ -95,6 +93,8 @@ TEST(GoldenFormat8, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-b
 TEST(GoldenFormat8, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres", "/v8", 8); }
 TEST(GoldenFormat8, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine", "/v8", 8); }
 
+// Format 7's files, as its last encoder (c1bfbba) wrote them: the start
+// triangles in the header, three varints each.
 TEST(GoldenFormat7, Torus) { expectDecodesToGolden("torus", "/v7", 7); }
 TEST(GoldenFormat7, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v7", 7); }
 TEST(GoldenFormat7, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v7", 7); }
