@@ -73,8 +73,9 @@ const char* const kEncodeHelp =
     "                    smallest file) or smallest (each at its smallest vertex,\n"
     "                    faster)\n"
     "  --threads N       threads for one mesh: 1, or 2 (the default where the machine\n"
-    "                    has several cores: the vertex coder beside the mesh checks,\n"
-    "                    refine's estimates beside the tree's attempt); with -o and\n"
+    "                    has several cores: the vertex coder beside the mesh checks\n"
+    "                    and the connectivity, refine's estimates beside the tree's\n"
+    "                    attempt); with -o and\n"
     "                    more than one job, each file takes one; never changes the file\n"
     "  -o, --output-dir DIR  write DIR/NAME.drm for every input (several inputs, folders)\n"
     "  -j, --jobs N      files encoded at once with -o (default: the number of cores)\n";

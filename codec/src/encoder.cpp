@@ -42,6 +42,15 @@ constexpr size_t kTryWithoutLeversBelowFaces = 20000;
 // corpus took 7 %, 9 % and 20 % more encoding time for them.
 constexpr size_t kTryStartsBelowFaces = 20000;
 constexpr size_t kFirstVerticesTried = 4;
+// The early connectivity (encodeBeforeVertexSection) holds the traversal's
+// tables while the vertex coder holds its own, so the peak memory is about
+// their sum. igea subdivided once (537,374 vertices) encoded in 1.20 times
+// Draco's wall time with it, 1.82 without, but peaked at 261.7 MiB (511
+// bytes a vertex) against 172.1 (336; issue 13's goal: under 400). With the
+// vertex coder's tables trimmed since (and its own second thread left out),
+// 204 to 207 MiB (399 to 405 bytes a vertex): still at the goal's edge.
+// Larger meshes code one after the other.
+constexpr size_t kEarlyConnectivityUpToVertices = size_t(1) << 18;
 // Below this many faces, the connectivity is also coded over the vertex
 // section's order (formats 1 to 8; kFlagSectionNumbering) besides Morton
 // order, and the smaller file kept. Regular meshes break their many ties
@@ -722,6 +731,12 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     const int firstLowBits = options.geometry == GeometryCoder::Refine ? options.refineBits : 0;
     VertexSection firstSection;
     std::future<VertexSection> firstSectionCoding;
+    // The early connectivity (below) runs on the calling thread while the
+    // vertex section is coded, where the section's numbering can be known
+    // before it: on the full grid, for a coder that does not keep the
+    // input's order.
+    const bool earlyConnectivity = secondThreadAllowed(options) && firstLowBits == 0 &&
+                                   !geometryCoderOf(firstCoder)->keepsInputOrder;
     if (secondThreadAllowed(options))
         // Its own second thread (the graph's halves, the forest) makes a
         // third while the topology check lasts (igea: 30 of 350 ms).
@@ -762,7 +777,7 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // coarse one), for a coder that does not keep the input's order.
     EarlyConnectivity early;
     EarlyConnectivity* before = nullptr;
-    if (firstSectionCoding.valid() && firstLowBits == 0 && !geometryCoderOf(firstCoder)->keepsInputOrder) {
+    if (earlyConnectivity && mesh.vertexCount() <= kEarlyConnectivityUpToVertices) {
         EncodeOptions first = options;
         first.geometry = firstCoder;
         early = encodeBeforeVertexSection(mesh, prepared, cut, first, progress);

@@ -750,16 +750,22 @@ static_assert(kMaxNeighboursLooked <= size_t(kMaxPricedTogether), "cheapestPick 
 // counts aside: they have models of their own and do not steer the
 // choice). The decoder needs none of this: it reads the tree's shape from
 // the child counts. A minimum spanning tree orders by edge length; this
-// orders by how well a vertex can be predicted. Returns child lists of
-// input vertices, in coding order. The coding is kept in `log`, one unit a
+// orders by how well a vertex can be predicted. Returns the vertices in
+// coding order (the tree's preorder: each tree whole, roots in input order)
+// and their child counts. The coding is kept in `log`, one unit a
 // vertex in preorder (a root's coordinates, any other's choice and
 // residuals): all of the section but the child counts, which are known
 // only once the tree is grown (writeGrownTree puts them in).
-std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>& grid, int bits,
-                                                     const NeighbourGraph& graph, int cellBits, bool flagChoices,
-                                                     bool frame, CodingLog& log, uint64_t& framedResiduals) {
+struct GrownTree {
+    std::vector<uint32_t> order;       // coding order -> input vertex
+    std::vector<uint32_t> childCount;  // per input vertex (counts, not lists: 8 bytes a vertex, not about 56)
+};
+GrownTree cheapestFirstTree(const std::vector<int32_t>& grid, int bits, const NeighbourGraph& graph, int cellBits,
+                            bool flagChoices, bool frame, CodingLog& log, uint64_t& framedResiduals) {
     const size_t n = grid.size() / 3;
-    std::vector<std::vector<uint32_t>> children(n);
+    GrownTree grown;
+    grown.order.reserve(n);
+    grown.childCount.assign(n, 0);
     std::vector<uint8_t> done(n, 0);
     // Per vertex, where its undecoded neighbours begin: a vertex decoded
     // stays decoded, so the cursor only moves on.
@@ -770,6 +776,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
     s.magnitude.reserve(3 * n);
     if (s.signContexts) s.signs.reserve(3 * n);
     s.childCountOf.reserve(n);
+    s.cells.reserve(n);  // grown by doubling, it held up to three times this while it moved
     LogWriter io{log};
     struct Frame {
         uint32_t vertex, decoded;
@@ -784,6 +791,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
         for (int32_t c : {rootAt.x, rootAt.y, rootAt.z}) log.encodeWideBits(uint32_t(c), bits);
         log.endUnit();
         s.place(self, rootAt);
+        grown.order.push_back(root);
         stack.push_back({root, self++});
         while (!stack.empty()) {
             const Frame top = stack.back();
@@ -809,7 +817,8 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
                 cheapestPick(price, p, count, [&](int i) { return gridPointOf(grid, undecoded[i]); });
             const uint32_t next = undecoded[nextPick.vertex];
             done[next] = 1;
-            children[top.vertex].push_back(next);
+            ++grown.childCount[top.vertex];
+            grown.order.push_back(next);
             s.begin(top.decoded);
             const GridPoint at = gridPointOf(grid, next);
             codeChild(io, s, self, top.decoded, p, at, nextPick.candidate);
@@ -819,7 +828,7 @@ std::vector<std::vector<uint32_t>> cheapestFirstTree(const std::vector<int32_t>&
         }
     }
     framedResiduals = s.framedResiduals;
-    return children;
+    return grown;
 }
 
 // The tree's section begins with the cell size and how the predictor
@@ -833,7 +842,7 @@ void writeTreeHeader(RangeEncoder& coder, int cellBits, bool flagChoices, bool f
 // The section of a tree cheapestFirstTree grew: each vertex's unit of its
 // log, then the vertex's child count. `vertexBits` gets what each vertex
 // (by input index) cost, both together.
-std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const std::vector<std::vector<uint32_t>>& children,
+std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const std::vector<uint32_t>& childCount,
                                     const std::vector<uint32_t>& order, bool flagChoices, bool frame,
                                     std::vector<float>& vertexBits) {
     RangeEncoder coder;
@@ -849,7 +858,7 @@ std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const st
     for (uint32_t self = 0; self < order.size(); ++self) {
         s.parentOf.push_back(walk.enter());
         at = log.replayInto(coder, at);
-        const uint32_t count = uint32_t(children[order[self]].size());
+        const uint32_t count = childCount[order[self]];
         codeChildCount(io, s, self, count);
         walk.expect(self, count);
         const double after = coder.bitsSoFar();
@@ -910,6 +919,7 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
     s.magnitude.reserve(3 * n);
     if (s.signContexts) s.signs.reserve(3 * n);
     s.childCountOf.reserve(n);
+    s.cells.reserve(n);  // grown by doubling, it held up to three times this while it moved
     TreeWalk walk;
     const size_t step = (n + kSteps - 1) / kSteps;
     double start = coder.bitsSoFar();
@@ -1014,12 +1024,15 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     auto cheapestFirst = [&](bool flagChoices, bool frame) {
         if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
         CodingLog log;
+        // Scans log 11 to 15 words a vertex (igea 12.9, horse 13.9, igea x4
+        // 11.3): reserved, the log is not grown by doubling, which held up
+        // to three times its size while it moved.
+        log.reserve(16 * (grid.size() / 3));
         GeometryEncoding coded;
-        const std::vector<std::vector<uint32_t>> grown =
-            cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals);
-        coded.order = preorder(grown);
+        GrownTree grown = cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals);
+        coded.order = std::move(grown.order);
         std::vector<float>& vertexBits = trials->vertexBits[(flagChoices ? 2 : 0) + (frame ? 1 : 0)];
-        coded.bytes = writeGrownTree(log, cellBits, grown, coded.order, flagChoices, frame, vertexBits);
+        coded.bytes = writeGrownTree(log, cellBits, grown.childCount, coded.order, flagChoices, frame, vertexBits);
         return coded;
     };
     auto spanningTree = [&](bool flagChoices, bool frame) {

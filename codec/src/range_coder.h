@@ -77,6 +77,7 @@ public:
     // returns where the next unit begins.
     size_t replayInto(RangeEncoder& coder, size_t at) const;
     size_t size() const { return words_.size(); }
+    void reserve(size_t words) { words_.reserve(words); }
 
 private:
     // Each call's first word says what it is by its top bits: 1 a binary
