@@ -290,7 +290,9 @@ struct EncodeOptions {
     // below 20000 faces also from three other first vertices and in the
     // input's face order, keeping the smallest file (0.8 % smaller on the
     // corpus in geometric mean; about twice the encoding time on such
-    // meshes). Larger meshes start at their smallest vertices either way.
+    // meshes); from format 9 each over both vertex numberings (Morton order
+    // and the vertex coder's: Stats::mortonNumbering). Larger meshes start
+    // at their smallest vertices in Morton numbering either way.
     bool searchStarts = true;
     NeighbourIndex index = NeighbourIndex::Auto;  // never changes the file
     // Threads for independent parts of one mesh's encoding (the vertex
