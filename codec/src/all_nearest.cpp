@@ -6,6 +6,7 @@
 
 #include "concurrency.h"
 #include "morton.h"
+#include "morton_order.h"
 
 namespace drm {
 namespace {
@@ -24,18 +25,14 @@ struct SortedPoints {
 
 SortedPoints sortByMorton(const std::vector<int32_t>& grid) {
     const size_t n = grid.size() / 3;
-    std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
-    for (size_t v = 0; v < n; ++v)
-        keyed[v] = {mortonKey(uint32_t(grid[3 * v]), uint32_t(grid[3 * v + 1]), uint32_t(grid[3 * v + 2])), uint32_t(v)};
-    std::sort(keyed.begin(), keyed.end());
     SortedPoints sorted;
+    sorted.id = mortonOrder(grid);  // ties (coincident points) by index
     sorted.key.resize(n);
-    sorted.id.resize(n);
     sorted.at.resize(3 * n);
     for (size_t i = 0; i < n; ++i) {
-        sorted.key[i] = keyed[i].first;
-        sorted.id[i] = keyed[i].second;
-        for (int c = 0; c < 3; ++c) sorted.at[3 * i + size_t(c)] = grid[3 * size_t(keyed[i].second) + size_t(c)];
+        const int32_t* p = &grid[3 * size_t(sorted.id[i])];
+        sorted.key[i] = mortonKeyOf(p);
+        for (int c = 0; c < 3; ++c) sorted.at[3 * i + size_t(c)] = p[c];
     }
     return sorted;
 }

@@ -19,8 +19,6 @@ constexpr uint32_t kLengths = 64;
 
 AdaptiveFrequencies lengthModel() { return AdaptiveFrequencies(std::vector<uint16_t>(kLengths, 1)); }
 
-uint64_t mortonKeyOf(const int32_t* p) { return mortonKey(uint32_t(p[0]), uint32_t(p[1]), uint32_t(p[2])); }
-
 }  // namespace
 
 std::vector<uint8_t> encodeSortedPoints(const std::vector<int32_t>& grid, int bits, std::vector<uint32_t>& order) {

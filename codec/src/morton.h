@@ -34,6 +34,9 @@ inline uint64_t mortonKey(uint64_t x, uint64_t y, uint64_t z) {
     return spreadMortonBits(x) | spreadMortonBits(y) << 1 | spreadMortonBits(z) << 2;
 }
 
+// The key of grid point p (x, y, z: non-negative, below 2^21).
+inline uint64_t mortonKeyOf(const int32_t* p) { return mortonKey(uint32_t(p[0]), uint32_t(p[1]), uint32_t(p[2])); }
+
 }  // namespace drm
 
 #endif  // DRM_MORTON_H

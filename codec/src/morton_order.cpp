@@ -7,10 +7,7 @@
 namespace drm {
 namespace {
 
-uint64_t keyOf(const std::vector<int32_t>& grid, uint32_t v) {
-    const int32_t* p = &grid[3 * size_t(v)];
-    return mortonKey(uint32_t(p[0]), uint32_t(p[1]), uint32_t(p[2]));
-}
+uint64_t keyOf(const std::vector<int32_t>& grid, uint32_t v) { return mortonKeyOf(&grid[3 * size_t(v)]); }
 
 // Digits of the least-significant-digit radix sort: 11 bits, so a 12-bit
 // grid's 36-bit keys take 4 passes over 2,048 counters (a comparison sort
