@@ -68,7 +68,7 @@ int chooseShift(const SortedPoints& sorted, size_t k) {
 }  // namespace
 
 std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, size_t k, int cellShift,
-                                           std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+                                           std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,
                                            int threads) {
     const size_t n = grid.size() / 3;
     std::vector<uint32_t> uncertain;
@@ -227,10 +227,9 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
                 // itself, or the first k if k coincident points of lower
                 // index push it out.
                 std::remove(best, best + k + 1, uint64_t(self));
-                for (size_t j = 0; j < k; ++j) {
-                    neighbours[size_t(self) * k + j] = uint32_t(best[j]);
-                    distance2[size_t(self) * k + j] = int64_t(best[j] >> 32);
-                }
+                for (size_t j = 0; j < k; ++j) neighbours[size_t(self) * k + j] = uint32_t(best[j]);
+                if (distance2)
+                    for (size_t j = 0; j < k; ++j) (*distance2)[size_t(self) * k + j] = int64_t(best[j] >> 32);
             }
         }
     };

@@ -74,7 +74,7 @@ public:
         visit(near_.data(), nearPoints_.data(), near_.size());
     }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
-    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,
                        int threads) const override;
 
 private:
@@ -220,11 +220,11 @@ void FlannIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) 
 // FLANN's batch search over every vertex, spread over `threads` (OpenMP),
 // then each answer certified as above; the few that are not are asked
 // again one by one with a growing k.
-void FlannIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+void FlannIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,
                                int threads) const {
     const size_t n = grid_.size() / 3;
     neighbours.assign(n * count, kNoVertex);
-    distance2.assign(n * count, 0);
+    if (distance2) distance2->assign(n * count, 0);
     if (n == 0 || count == 0 || present_.empty()) return;
     const size_t k = std::min(present_.size(), count + 1 + kExtraCandidates);  // + 1: the vertex itself
     std::vector<size_t> indexData(n * k, size_t(-1));
@@ -247,7 +247,7 @@ void FlannIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, 
         if (!settle(p, row, got, bound, count, other, found) && !all) nearest(p, count, other, found);
         for (size_t j = 0; j < found.size(); ++j) {
             neighbours[v * count + j] = found[j].second;
-            distance2[v * count + j] = found[j].first;
+            if (distance2) (*distance2)[v * count + j] = found[j].first;
         }
     }
 }

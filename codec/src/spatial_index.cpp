@@ -37,7 +37,7 @@ public:
         cells_.forEachNear(q, radius, visit);
     }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
-    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+    void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,
                        int threads) const override;
 
 private:
@@ -61,15 +61,16 @@ void GridIndex::nearest(const FixedPoint& p, size_t count, VertexFilter accept, 
 // Every vertex at once by cells (all_nearest.h), then the vertices that
 // pass leaves uncertain one by one: the same answers (igea's 8-nearest
 // graph 806 M -> 565 M instructions, horse 293 M -> 185 M).
-void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>& distance2,
+void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,
                               int threads) const {
     const size_t n = grid_.size() / 3;
     neighbours.assign(n * count, kNoVertex);
-    distance2.assign(n * count, 0);
+    if (distance2) distance2->assign(n * count, 0);
     std::vector<uint32_t> uncertain;
     if (cells_.presentCount() == n) {
         uncertain = nearestOfEachByCells(grid_, count, -1, neighbours, distance2, threads);
-        for (int64_t& d2 : distance2) d2 *= kSubUnits * kSubUnits;  // to fixed point, as nearest() gives them
+        if (distance2)
+            for (int64_t& d2 : *distance2) d2 *= kSubUnits * kSubUnits;  // to fixed point, as nearest() gives them
     } else {
         uncertain.resize(n);
         for (size_t v = 0; v < n; ++v) uncertain[v] = uint32_t(v);
@@ -79,7 +80,7 @@ void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, s
         nearest(fixedPointOf(grid_, v), count, [v](uint32_t w) { return w != v; }, found);
         for (size_t j = 0; j < found.size(); ++j) {
             neighbours[v * count + j] = found[j].second;
-            distance2[v * count + j] = found[j].first;
+            if (distance2) (*distance2)[v * count + j] = found[j].first;
         }
     }
 }

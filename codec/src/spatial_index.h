@@ -97,11 +97,13 @@ public:
 
     // For every vertex v of the grid, the `count` present vertices other
     // than v nearest it, exactly as nearest() would give them:
-    // neighbours[v * count + j] (kNoVertex past the last) and their
-    // fixedDistance2 from v in distance2[v * count + j]. Uses up to
-    // `threads` threads (the answers are the same).
+    // neighbours[v * count + j] (kNoVertex past the last) and, unless
+    // distance2 is null, their fixedDistance2 from v in
+    // (*distance2)[v * count + j] (8 bytes a neighbour: the geometry
+    // tree's graph asks for none). Uses up to `threads` threads (the
+    // answers are the same).
     virtual void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours,
-                               std::vector<int64_t>& distance2, int threads = 1) const = 0;
+                               std::vector<int64_t>* distance2, int threads = 1) const = 0;
 };
 
 // What an index serves: the traversal's searches (rank search, size

@@ -35,7 +35,7 @@ double runOnce(const std::string& role, drm::NeighbourIndex index, const std::ve
     if (role == "graph") {
         std::vector<uint32_t> neighbours;
         std::vector<int64_t> distance2;
-        drm::makeSpatialIndex(grid, index, drm::IndexRole::NeighbourGraph)->nearestOfEach(8, neighbours, distance2);
+        drm::makeSpatialIndex(grid, index, drm::IndexRole::NeighbourGraph)->nearestOfEach(8, neighbours, &distance2);
     } else {
         drm::DecodeOptions options;
         options.index = index;

@@ -97,7 +97,7 @@ TEST_P(BothIndexes, NearestOfEachIsEveryVertexsNearestOthers) {
         SCOPED_TRACE(index->name());
         std::vector<uint32_t> neighbours;
         std::vector<int64_t> distance2;
-        index->nearestOfEach(count, neighbours, distance2);
+        index->nearestOfEach(count, neighbours, &distance2);
         ASSERT_EQ(neighbours.size(), n * count);
         for (uint32_t v = 0; v < n; ++v) {
             std::vector<RankedVertex> all;
@@ -109,6 +109,10 @@ TEST_P(BothIndexes, NearestOfEachIsEveryVertexsNearestOthers) {
                 ASSERT_EQ(distance2[v * count + j], all[j].first);
             }
         }
+        // Without the distances (the geometry tree's graph), the same neighbours.
+        std::vector<uint32_t> alone;
+        index->nearestOfEach(count, alone, nullptr);
+        EXPECT_EQ(alone, neighbours);
     }
 }
 
@@ -144,7 +148,7 @@ TEST(AllNearest, CertifiedPointsHaveExactlyTheirNearestAtEveryCellWidth) {
             SCOPED_TRACE("k " + std::to_string(k) + " cell shift " + std::to_string(shift));
             std::vector<uint32_t> neighbours(n * k, 12345);
             std::vector<int64_t> distance2(n * k, -1);
-            const std::vector<uint32_t> uncertain = nearestOfEachByCells(grid, k, shift, neighbours, distance2);
+            const std::vector<uint32_t> uncertain = nearestOfEachByCells(grid, k, shift, neighbours, &distance2);
             ASSERT_TRUE(std::is_sorted(uncertain.begin(), uncertain.end()));
             for (uint32_t v = 0; v < n; ++v) {
                 const bool certain = !std::binary_search(uncertain.begin(), uncertain.end(), v);
@@ -171,13 +175,13 @@ TEST(AllNearest, CertifiedPointsHaveExactlyTheirNearestAtEveryCellWidth) {
     for (size_t i = 0; i < scan.size(); ++i) scan[i] = int32_t(std::lround((bunny.positions[i] - low) * 4095.0 / (high - low)));
     std::vector<uint32_t> scanNeighbours(scan.size() / 3 * 8);
     std::vector<int64_t> scanDistance2(scanNeighbours.size());
-    const size_t left = nearestOfEachByCells(scan, 8, -1, scanNeighbours, scanDistance2).size();
+    const size_t left = nearestOfEachByCells(scan, 8, -1, scanNeighbours, &scanDistance2).size();
     EXPECT_LT(double(left), 0.25 * double(scan.size() / 3)) << left << " of " << scan.size() / 3;
     // Outside [0, 2^21) nothing is certified.
     std::vector<int32_t> negative = {-1, 0, 0, 5, 5, 5, 6, 6, 6};
     std::vector<uint32_t> neighbours(3, kNoVertex);
     std::vector<int64_t> distance2(3, 0);
-    EXPECT_EQ(nearestOfEachByCells(negative, 1, -1, neighbours, distance2).size(), 3u);
+    EXPECT_EQ(nearestOfEachByCells(negative, 1, -1, neighbours, &distance2).size(), 3u);
 }
 
 // Squared distances of 2^31 or more do not fit the batch's sort keys: such
@@ -194,7 +198,7 @@ TEST(AllNearest, FarBlockPointsNeverEnterAndNeverWrongACertifiedPoint) {
     const size_t n = grid.size() / 3, k = 8;
     std::vector<uint32_t> neighbours(n * k, 12345);
     std::vector<int64_t> distance2(n * k, -1);
-    const std::vector<uint32_t> uncertain = nearestOfEachByCells(grid, k, 21, neighbours, distance2);
+    const std::vector<uint32_t> uncertain = nearestOfEachByCells(grid, k, 21, neighbours, &distance2);
     EXPECT_EQ(uncertain, std::vector<uint32_t>{uint32_t(n - 1)});  // only the lone point's neighbours are all far
     for (uint32_t v = 0; v + 1 < n; ++v) {
         std::vector<RankedVertex> expected;
@@ -272,8 +276,8 @@ TEST(AllNearest, TwoThreadsGiveWhatOneGives) {
     const size_t n = grid.size() / 3, k = 8;
     std::vector<uint32_t> oneNeighbours(n * k, 12345), twoNeighbours(n * k, 12345);
     std::vector<int64_t> oneDistance2(n * k, -1), twoDistance2(n * k, -1);
-    const std::vector<uint32_t> oneUncertain = nearestOfEachByCells(grid, k, -1, oneNeighbours, oneDistance2, 1);
-    const std::vector<uint32_t> twoUncertain = nearestOfEachByCells(grid, k, -1, twoNeighbours, twoDistance2, 2);
+    const std::vector<uint32_t> oneUncertain = nearestOfEachByCells(grid, k, -1, oneNeighbours, &oneDistance2, 1);
+    const std::vector<uint32_t> twoUncertain = nearestOfEachByCells(grid, k, -1, twoNeighbours, &twoDistance2, 2);
     EXPECT_FALSE(oneUncertain.empty());  // the outliers at least
     EXPECT_EQ(twoUncertain, oneUncertain);
     EXPECT_EQ(twoNeighbours, oneNeighbours);
