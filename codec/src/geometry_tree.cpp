@@ -906,7 +906,7 @@ constexpr size_t kAbandonEarlyFromStep = 2;
 // returning nothing, once this section must end larger than the rival, or
 // runs clearly over it on the same vertices (kAbandonOverRival).
 std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int cellBits,
-                              const std::vector<std::vector<uint32_t>>& children, const std::vector<uint32_t>& order,
+                              const Forest& forest, const std::vector<uint32_t>& order,
                               bool flagChoices, bool frame, uint64_t& framedResiduals,
                               const std::vector<float>* rivalBits = nullptr, size_t rivalSize = 0) {
     const size_t n = order.size();
@@ -935,8 +935,8 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
             codeChild(io, s, self, parent, predict(s, self, parent), at);
         }
         s.place(self, at);
-        codeChildCount(io, s, self, uint32_t(children[vertex].size()));
-        walk.expect(self, uint32_t(children[vertex].size()));
+        codeChildCount(io, s, self, forest.childCount(vertex));
+        walk.expect(self, forest.childCount(vertex));
         if (!rivalBits) continue;
         rivalSpent += double((*rivalBits)[vertex]);
         if ((self + 1) % step != 0) continue;
@@ -987,7 +987,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     const int cellBits = cellBitsFor(nearest.spacing, bits);
     GeometryEncoding* best = nullptr;
     NeighbourGraph graph;
-    std::vector<std::vector<uint32_t>> spanning;  // kept for the next trial
+    Forest spanning;  // kept for the next trial
     // The ways asked for, in the order tried (see the loop below).
     std::vector<std::pair<bool, bool>> ways;  // (flags, frame)
     for (ChoiceCoding coding : {ChoiceCoding::Flags, ChoiceCoding::Symbol})
@@ -1037,7 +1037,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     };
     auto spanningTree = [&](bool flagChoices, bool frame) {
         if (forestBuilding.valid()) forestBuilding.get();
-        if (spanning.empty()) buildSpanningForest();
+        if (spanning.start.empty()) buildSpanningForest();
         // Against the cheapest-first tree coded the same way, where it was.
         const int rivalKey = 4 + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
         const auto rival = trials->coded.find(rivalKey);

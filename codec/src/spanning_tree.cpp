@@ -96,7 +96,7 @@ struct Edge {
 };
 
 template <typename Length>
-std::vector<std::vector<uint32_t>> spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
+Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
     const size_t n = grid.size() / 3;
     const std::vector<uint32_t>& neighbours = nearest.neighbours;
     const size_t k = size_t(nearest.k);
@@ -170,8 +170,10 @@ std::vector<std::vector<uint32_t>> spanningForestOf(const std::vector<int32_t>& 
         }
     }
     std::vector<Edge<Length>>().swap(edges);
-    // Orient away from each component's first vertex (input order).
-    std::vector<std::vector<uint32_t>> children(n);
+    // Orient away from each component's first vertex (input order). A
+    // vertex's children are some of its forest edges: they are written
+    // over the front of its own run of `adjacent`, then gathered.
+    std::vector<uint32_t> childCount(n, 0);
     std::vector<uint8_t> seen(n, 0);
     std::vector<uint32_t> stack;
     for (size_t root = 0; root < n; ++root) {
@@ -183,24 +185,36 @@ std::vector<std::vector<uint32_t>> spanningForestOf(const std::vector<int32_t>& 
             stack.pop_back();
             const auto first = adjacent.begin() + ptrdiff_t(offset[v]), last = adjacent.begin() + ptrdiff_t(offset[v + 1]);
             std::sort(first, last);
+            auto kept = first;
             for (auto next = first; next != last; ++next)
                 if (!seen[next->second]) {
                     seen[next->second] = 1;
-                    children[v].push_back(next->second);
+                    *kept++ = *next;
                     stack.push_back(next->second);
                 }
+            childCount[v] = uint32_t(kept - first);
         }
     }
-    return children;
+    Forest forest;
+    forest.start.assign(n + 1, 0);
+    for (size_t v = 0; v < n; ++v) forest.start[v + 1] = forest.start[v] + childCount[v];
+    forest.child.resize(forest.start[n]);
+    for (size_t v = 0; v < n; ++v)
+        for (uint32_t c = 0; c < childCount[v]; ++c) forest.child[forest.start[v] + c] = adjacent[offset[v] + c].second;
+    return forest;
 }
 
 }  // namespace
 
-// Minimum spanning forest of the k-nearest-neighbour graph, as child lists,
-// children nearest first.
-std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
+// Minimum spanning forest of the k-nearest-neighbour graph, children
+// nearest first.
+Forest spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest) {
     const size_t n = grid.size() / 3;
-    if (n < 2) return std::vector<std::vector<uint32_t>>(n);
+    if (n < 2) {
+        Forest lone;
+        lone.start.assign(n + 1, 0);
+        return lone;
+    }
     // No coordinate difference exceeds the coordinates' range (at most 21
     // bits: the test cannot overflow).
     const auto range = std::minmax_element(grid.begin(), grid.end());
@@ -212,15 +226,16 @@ std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& gr
 // The encoder may visit children in any order; the first child of a vertex
 // is predicted by going straight on from its parent, so it should be the
 // child that lies most nearly straight on (others use sibling predictions).
-void orderChildrenForPrediction(const std::vector<int32_t>& grid, std::vector<std::vector<uint32_t>>& children) {
-    std::vector<uint32_t> parentOf(children.size(), kNoVertex);
-    for (size_t v = 0; v < children.size(); ++v)
-        for (uint32_t c : children[v]) parentOf[c] = uint32_t(v);
-    for (size_t v = 0; v < children.size(); ++v) {
-        if (parentOf[v] == kNoVertex || children[v].size() < 2) continue;
-        const GridPoint at = gridPointOf(grid, uint32_t(v));
+void orderChildrenForPrediction(const std::vector<int32_t>& grid, Forest& forest) {
+    const size_t n = forest.vertexCount();
+    std::vector<uint32_t> parentOf(n, kNoVertex);
+    for (uint32_t v = 0; v < n; ++v)
+        for (const uint32_t* c = forest.begin(v); c != forest.end(v); ++c) parentOf[*c] = v;
+    for (uint32_t v = 0; v < n; ++v) {
+        if (parentOf[v] == kNoVertex || forest.childCount(v) < 2) continue;
+        const GridPoint at = gridPointOf(grid, v);
         const GridPoint straight = at + (at - gridPointOf(grid, parentOf[v]));
-        std::stable_sort(children[v].begin(), children[v].end(), [&](uint32_t a, uint32_t b) {
+        std::stable_sort(forest.begin(v), forest.end(v), [&](uint32_t a, uint32_t b) {
             return residualCost(gridPointOf(grid, a) - straight) < residualCost(gridPointOf(grid, b) - straight);
         });
     }
@@ -228,11 +243,10 @@ void orderChildrenForPrediction(const std::vector<int32_t>& grid, std::vector<st
 
 // The depth-first preorder of the forest (roots in input order, children
 // nearest first), as input vertices.
-std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& children) {
-    const size_t n = children.size();
+std::vector<uint32_t> preorder(const Forest& forest) {
+    const size_t n = forest.vertexCount();
     std::vector<uint8_t> isChild(n, 0);
-    for (const auto& list : children)
-        for (uint32_t c : list) isChild[c] = 1;
+    for (uint32_t c : forest.child) isChild[c] = 1;
     std::vector<uint32_t> order, stack;
     order.reserve(n);
     for (size_t root = 0; root < n; ++root) {
@@ -242,7 +256,7 @@ std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& childre
             const uint32_t v = stack.back();
             stack.pop_back();
             order.push_back(v);
-            for (size_t c = children[v].size(); c-- > 0;) stack.push_back(children[v][c]);
+            for (const uint32_t* c = forest.end(v); c != forest.begin(v);) stack.push_back(*--c);
         }
     }
     return order;

@@ -35,17 +35,31 @@ struct NeighbourGraph {
 };
 NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count);
 
+// A forest as child lists in one array: the children of v are
+// child[start[v] .. start[v + 1]) (a vector per vertex cost 24 bytes and an
+// allocation each, about 50 bytes a vertex in all).
+struct Forest {
+    std::vector<uint32_t> start;  // vertexCount() + 1 entries
+    std::vector<uint32_t> child;
+    size_t vertexCount() const { return start.empty() ? 0 : start.size() - 1; }
+    uint32_t childCount(uint32_t v) const { return start[size_t(v) + 1] - start[v]; }
+    uint32_t* begin(uint32_t v) { return child.data() + start[v]; }
+    uint32_t* end(uint32_t v) { return child.data() + start[size_t(v) + 1]; }
+    const uint32_t* begin(uint32_t v) const { return child.data() + start[v]; }
+    const uint32_t* end(uint32_t v) const { return child.data() + start[size_t(v) + 1]; }
+};
+
 // Minimum spanning forest of the nearest-neighbour graph (all nearest.k
-// of each vertex), as child lists, children nearest first.
-std::vector<std::vector<uint32_t>> spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest);
+// of each vertex), children nearest first.
+Forest spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest);
 
 // Puts first, among each vertex's children, the one lying most nearly
 // straight on from its parent (the first child is predicted that way).
-void orderChildrenForPrediction(const std::vector<int32_t>& grid, std::vector<std::vector<uint32_t>>& children);
+void orderChildrenForPrediction(const std::vector<int32_t>& grid, Forest& forest);
 
 // The depth-first preorder of the forest (roots in input order), as input
 // vertices.
-std::vector<uint32_t> preorder(const std::vector<std::vector<uint32_t>>& children);
+std::vector<uint32_t> preorder(const Forest& forest);
 
 // The shape of the depth-first walk, rebuilt from the child counts alone:
 // before each vertex it tells that vertex's parent (as a decoded index), so

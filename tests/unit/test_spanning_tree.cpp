@@ -53,10 +53,11 @@ EdgeSet fullySortedForest(const std::vector<int32_t>& grid, const NearestNeighbo
     return forest;
 }
 
-EdgeSet edgesOf(const std::vector<std::vector<uint32_t>>& children) {
+EdgeSet edgesOf(const Forest& forest) {
     EdgeSet edges;
-    for (size_t v = 0; v < children.size(); ++v)
-        for (uint32_t c : children[v]) edges.insert({std::min(uint32_t(v), c), std::max(uint32_t(v), c)});
+    for (uint32_t v = 0; v < forest.vertexCount(); ++v)
+        for (const uint32_t* c = forest.begin(v); c != forest.end(v); ++c)
+            edges.insert({std::min(v, *c), std::max(v, *c)});
     return edges;
 }
 
@@ -76,8 +77,17 @@ TEST(SpanningForest, IsTheForestOfAFullSortWithTiesAndSeveralComponents) {
             const std::vector<int32_t> grid = clusteredPoints(n, clusters, 24, uint32_t(n) + uint32_t(clusters));
             const NearestNeighbours nearest = nearestNeighbours(grid, NeighbourIndex::Grid, kNeighbours);
             const EdgeSet expected = fullySortedForest(grid, nearest);
-            const EdgeSet found = edgesOf(spanningForest(grid, nearest));
+            const Forest forest = spanningForest(grid, nearest);
+            const EdgeSet found = edgesOf(forest);
             EXPECT_EQ(found, expected) << n << " points in " << clusters << " clusters";
+            // The preorder walks every vertex once, each child after its parent.
+            const std::vector<uint32_t> order = preorder(forest);
+            std::vector<size_t> at(n, n);
+            for (size_t i = 0; i < order.size(); ++i) at[order[i]] = i;
+            EXPECT_EQ(order.size(), n);
+            EXPECT_EQ(std::count(at.begin(), at.end(), n), 0);
+            for (uint32_t v = 0; v < n; ++v)
+                for (const uint32_t* c = forest.begin(v); c != forest.end(v); ++c) EXPECT_LT(at[v], at[*c]);
             for (const auto& e : found)
                 EXPECT_EQ(e.first % size_t(clusters), e.second % size_t(clusters)) << "clusters far apart stay apart";
         }
