@@ -249,5 +249,13 @@ void shareOneMallocArena() {
 #endif
 }
 
+void mapLargeBlocksApart(size_t vertexCount) {
+#ifdef __GLIBC__
+    if (vertexCount > (size_t(1) << 18)) mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#else
+    (void)vertexCount;
+#endif
+}
+
 }  // namespace cli
 }  // namespace drm

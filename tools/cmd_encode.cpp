@@ -94,6 +94,7 @@ struct EncodedFile {
 EncodedFile encodeFile(const std::string& input, const std::string& output, drm::EncodeOptions options,
                        ProgressBar* bar) {
     const drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
+    mapLargeBlocksApart(loaded.mesh.vertexCount());  // process-wide: in a batch, from the first large mesh on
     drm::Encoded encoded;
     if (bar) options.progress = bar->callback();
     try {

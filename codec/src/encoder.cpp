@@ -44,13 +44,21 @@ constexpr size_t kTryStartsBelowFaces = 20000;
 constexpr size_t kFirstVerticesTried = 4;
 // The early connectivity (encodeBeforeVertexSection) holds the traversal's
 // tables while the vertex coder holds its own, so the peak memory is about
-// their sum. igea subdivided once (537,374 vertices) encoded in 1.20 times
-// Draco's wall time with it, 1.82 without, but peaked at 261.7 MiB (511
-// bytes a vertex) against 172.1 (336; issue 13's goal: under 400). With the
-// vertex coder's tables trimmed since (and its own second thread left out),
-// 204 to 207 MiB (399 to 405 bytes a vertex): still at the goal's edge.
-// Larger meshes code one after the other.
-constexpr size_t kEarlyConnectivityUpToVertices = size_t(1) << 18;
+// their sum. On igea subdivided once (537,374 vertices) it takes the
+// encoding from 2.6 to 1.6-1.8 s of wall time, the peak from 143 to 195-203
+// MB (363 to 387 bytes a vertex; issue 13's goal: under 400) when the
+// vertex section keeps to one thread (below) and the drm tool maps large
+// blocks on their own (tools/cli.cpp, mapLargeBlocksApart). On igea
+// subdivided twice (2,149,490 vertices) the two threads ran slower than one
+// after the other (14.5 against 12.1 s, 734 against 550 MB): larger meshes
+// code the two stages in turn.
+constexpr size_t kEarlyConnectivityUpToVertices = size_t(1) << 20;
+// Above this many vertices, a vertex section coded beside the early
+// connectivity keeps to one thread: its own second one (the graph's
+// halves, the forest built beside the cheapest-first tree) added its tables
+// to the two stages' (igea x4: 201-212 MB and 1.8-2.1 s, against 195-203 MB
+// and 1.6-1.8 s).
+constexpr size_t kSectionThreadsBesideUpToVertices = size_t(1) << 18;
 // Below this many faces, the connectivity is also coded over the vertex
 // section's order (formats 1 to 8; kFlagSectionNumbering) besides Morton
 // order, and the smaller file kept. Regular meshes break their many ties
@@ -737,11 +745,14 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // input's order.
     const bool earlyConnectivity = secondThreadAllowed(options) && firstLowBits == 0 &&
                                    !geometryCoderOf(firstCoder)->keepsInputOrder;
+    const bool earlyHere = earlyConnectivity && mesh.vertexCount() <= kEarlyConnectivityUpToVertices;
+    EncodeOptions sectionOptions = options;
+    if (earlyHere && mesh.vertexCount() > kSectionThreadsBesideUpToVertices) sectionOptions.threads = 1;
     if (secondThreadAllowed(options))
         // Its own second thread (the graph's halves, the forest) makes a
         // third while the topology check lasts (igea: 30 of 350 ms).
         firstSectionCoding = startBeside([&] {
-            return codeVertexSection(prepared.quantized, options, firstCoder, firstLowBits, nullptr);
+            return codeVertexSection(prepared.quantized, sectionOptions, firstCoder, firstLowBits, nullptr);
         });
     // A mesh the traversal can take as it is needs no cut (the common case,
     // and the cheap test); any other is cut into manifold pieces.
@@ -775,7 +786,7 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // coarse one), for a coder that does not keep the input's order.
     EarlyConnectivity early;
     EarlyConnectivity* before = nullptr;
-    if (earlyConnectivity && mesh.vertexCount() <= kEarlyConnectivityUpToVertices) {
+    if (earlyHere) {
         EncodeOptions first = options;
         first.geometry = firstCoder;
         early = encodeBeforeVertexSection(mesh, prepared, cut, first, progress);

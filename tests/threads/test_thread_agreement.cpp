@@ -5,8 +5,9 @@
 // attempt must each come out as they do one after the other.
 //
 // Meshes built in code large enough that every split is taken (16,384
-// vertices and more), one of them coarse enough on its grid that refine's
-// estimates run; tests/data's meshes under the option sets that take the
+// vertices and more; one over 2^18, where the vertex section coded beside
+// the connectivity keeps to one thread), one of them coarse enough on its
+// grid that refine's estimates run; tests/data's meshes under the option sets that take the
 // other paths (refine with its low bits searched or given, the tree, raw);
 // and the shared corpus (../shared/meshes beside the project, one ctest
 // test per mesh; skipped without it).
@@ -53,6 +54,9 @@ TEST(ThreadAgreement, LargeMeshesTakeEverySplit) {
     ASSERT_GT(8.0 * double(tree.stats.geometryBytes) / double(tree.stats.vertices), drm::kAutoRefineAboveBitsPerVertex)
         << "the estimates would not run";
     expectThreadsAgree(jittered, fine);
+    // 655,362 vertices, over 2^18: the connectivity is coded beside a
+    // vertex section kept to one thread.
+    expectThreadsAgree(drm_test::icosphere(8), drm::EncodeOptions());
 }
 
 TEST(ThreadAgreement, TestDataMeshesUnderEveryGeometryCoder) {
