@@ -249,9 +249,13 @@ void shareOneMallocArena() {
 #endif
 }
 
+// The tool's own bound (cli.h), measured on igea subdivided once and twice;
+// not one of the codec's limits.
+constexpr size_t kLargeMeshVertices = size_t(1) << 18;
+
 void mapLargeBlocksApart(size_t vertexCount) {
 #ifdef __GLIBC__
-    if (vertexCount > (size_t(1) << 18)) mallopt(M_MMAP_THRESHOLD, 1 << 20);
+    if (vertexCount > kLargeMeshVertices) mallopt(M_MMAP_THRESHOLD, 1 << 20);
 #else
     (void)vertexCount;
 #endif

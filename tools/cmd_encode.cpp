@@ -91,10 +91,11 @@ struct EncodedFile {
 };
 
 // Reads, encodes and writes one file; throws drm::Error naming the input.
+// alone: the only mesh this process encodes (not a batch's).
 EncodedFile encodeFile(const std::string& input, const std::string& output, drm::EncodeOptions options,
-                       ProgressBar* bar) {
+                       ProgressBar* bar, bool alone) {
     const drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
-    mapLargeBlocksApart(loaded.mesh.vertexCount());  // process-wide: in a batch, from the first large mesh on
+    if (alone) mapLargeBlocksApart(loaded.mesh.vertexCount());
     drm::Encoded encoded;
     if (bar) options.progress = bar->callback();
     try {
@@ -126,7 +127,7 @@ int encodeMany(const Arguments& parsed, const drm::EncodeOptions& options) {
     runBatch({"encoded", "bytes out", false}, files, jobs, [&](const BatchFile& file) {
         FileOutcome outcome;
         try {
-            const EncodedFile encoded = encodeFile(file.input, file.output, perFile, nullptr);
+            const EncodedFile encoded = encodeFile(file.input, file.output, perFile, nullptr, false);
             outcome.ok = true;
             outcome.line = encoded.line;
             outcome.notes = encoded.notes;
@@ -159,7 +160,7 @@ int runEncode(const std::vector<std::string>& args) {
 
     shareOneMallocArena();
     ProgressBar bar("encoding " + fileName(input));
-    const EncodedFile encoded = encodeFile(input, output, options, &bar);
+    const EncodedFile encoded = encodeFile(input, output, options, &bar, true);
     printNotes(encoded.notes);
     if (!encoded.repairs.empty()) printNote(input + ": " + encoded.repairs);
     std::printf("%s\n", encoded.line.c_str());

@@ -33,7 +33,9 @@ namespace {
 // and a lower peak. The heap grows 16 MiB at a time, so that the huge-page
 // advice given with its large blocks (huge_pages.cpp) covers what smaller
 // blocks take from it next. Process-wide, so the tool's choice, not the
-// library's (as is cli.cpp's shareOneMallocArena, for one mesh's threads).
+// library's (as are cli.cpp's shareOneMallocArena, for one mesh's threads,
+// and mapLargeBlocksApart, which lowers the threshold again for one large
+// mesh).
 void keepFreedMemoryForReuse() {
 #ifdef __GLIBC__
     mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's maximum on 64-bit systems

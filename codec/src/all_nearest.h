@@ -18,10 +18,10 @@
 namespace drm {
 
 // grid: x, y, z per point (a point outside [0, 2^21) on any axis leaves
-// every point uncertain). For every point v it can
-// certify, fills neighbours[v * k + j] and, unless distance2 is null,
-// (*distance2)[v * k + j] (squared distance in grid units) with the k points other than v nearest it, in
-// increasing (distance, index) order: exactly what any exact search with
+// every point uncertain). For every point v it can certify, fills
+// neighbours[v * k + j] and, unless distance2 is null, (*distance2)[v * k +
+// j] (squared distance in grid units) with the k points other than v
+// nearest it, in increasing (distance, index) order: exactly what any exact search with
 // ties by index gives. Returns the points it could not certify, in
 // increasing order; their rows are left untouched. cellShift: cells are
 // 2^cellShift grid units wide (any width gives the same answers, only more

@@ -45,19 +45,19 @@ constexpr size_t kFirstVerticesTried = 4;
 // The early connectivity (encodeBeforeVertexSection) holds the traversal's
 // tables while the vertex coder holds its own, so the peak memory is about
 // their sum. On igea subdivided once (537,374 vertices) it takes the
-// encoding from 2.6 to 1.6-1.8 s of wall time, the peak from 143 to 195-203
-// MB (363 to 387 bytes a vertex; issue 13's goal: under 400) when the
+// encoding from 2.6 to 1.6-1.8 s of wall time, the peak from 140 to 188-196
+// MiB (367 to 382 bytes a vertex; issue 13's goal: under 400) when the
 // vertex section keeps to one thread (below) and the drm tool maps large
 // blocks on their own (tools/cli.cpp, mapLargeBlocksApart). On igea
 // subdivided twice (2,149,490 vertices) the two threads ran slower than one
-// after the other (14.5 against 12.1 s, 734 against 550 MB): larger meshes
-// code the two stages in turn.
+// after the other (14.5 s and 717 MiB, against 12.1 s and 537 MiB): larger
+// meshes code the two stages in turn.
 constexpr size_t kEarlyConnectivityUpToVertices = size_t(1) << 20;
 // Above this many vertices, a vertex section coded beside the early
 // connectivity keeps to one thread: its own second one (the graph's
 // halves, the forest built beside the cheapest-first tree) added its tables
-// to the two stages' (igea x4: 201-212 MB and 1.8-2.1 s, against 195-203 MB
-// and 1.6-1.8 s).
+// to the two stages' (igea x4: 197-207 MiB and 1.8-2.1 s, against 191-199
+// MiB and 1.6-1.8 s, blocks of 4 MiB and more mapped apart).
 constexpr size_t kSectionThreadsBesideUpToVertices = size_t(1) << 18;
 // Below this many faces, the connectivity is also coded over the vertex
 // section's order (formats 1 to 8; kFlagSectionNumbering) besides Morton
@@ -737,20 +737,23 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
                            (options.geometry == GeometryCoder::Refine && options.refineBits == 0);
     const GeometryCoder firstCoder = treeFirst ? GeometryCoder::SpanningTree : options.geometry;
     const int firstLowBits = options.geometry == GeometryCoder::Refine ? options.refineBits : 0;
-    VertexSection firstSection;
-    std::future<VertexSection> firstSectionCoding;
     // The early connectivity (below) runs on the calling thread while the
     // vertex section is coded, where the section's numbering can be known
     // before it: on the full grid, for a coder that does not keep the
     // input's order.
     const bool earlyConnectivity = secondThreadAllowed(options) && firstLowBits == 0 &&
-                                   !geometryCoderOf(firstCoder)->keepsInputOrder;
-    const bool earlyHere = earlyConnectivity && mesh.vertexCount() <= kEarlyConnectivityUpToVertices;
+                                   !geometryCoderOf(firstCoder)->keepsInputOrder &&
+                                   mesh.vertexCount() <= kEarlyConnectivityUpToVertices;
     EncodeOptions sectionOptions = options;
-    if (earlyHere && mesh.vertexCount() > kSectionThreadsBesideUpToVertices) sectionOptions.threads = 1;
+    if (earlyConnectivity && mesh.vertexCount() > kSectionThreadsBesideUpToVertices) sectionOptions.threads = 1;
+    // Declared after everything the second thread reads (sectionOptions):
+    // on an exception the future is destroyed first, and waits for it.
+    VertexSection firstSection;
+    std::future<VertexSection> firstSectionCoding;
     if (secondThreadAllowed(options))
         // Its own second thread (the graph's halves, the forest) makes a
-        // third while the topology check lasts (igea: 30 of 350 ms).
+        // third while the topology check lasts (igea: 30 of 350 ms), unless
+        // it keeps to one beside the early connectivity.
         firstSectionCoding = startBeside([&] {
             return codeVertexSection(prepared.quantized, sectionOptions, firstCoder, firstLowBits, nullptr);
         });
@@ -786,7 +789,7 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // coarse one), for a coder that does not keep the input's order.
     EarlyConnectivity early;
     EarlyConnectivity* before = nullptr;
-    if (earlyHere) {
+    if (earlyConnectivity) {
         EncodeOptions first = options;
         first.geometry = firstCoder;
         early = encodeBeforeVertexSection(mesh, prepared, cut, first, progress);

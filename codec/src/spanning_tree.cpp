@@ -172,8 +172,10 @@ Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbour
     std::vector<Edge<Length>>().swap(edges);
     // Orient away from each component's first vertex (input order). A
     // vertex's children are some of its forest edges: they are written
-    // over the front of its own run of `adjacent`, then gathered.
-    std::vector<uint32_t> childCount(n, 0);
+    // over the front of its own run of `adjacent`, then gathered; their
+    // counts go in forest.start, one place on, and are summed after.
+    Forest forest;
+    forest.start.assign(n + 1, 0);
     std::vector<uint8_t> seen(n, 0);
     std::vector<uint32_t> stack;
     for (size_t root = 0; root < n; ++root) {
@@ -192,15 +194,14 @@ Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbour
                     *kept++ = *next;
                     stack.push_back(next->second);
                 }
-            childCount[v] = uint32_t(kept - first);
+            forest.start[v + 1] = uint32_t(kept - first);
         }
     }
-    Forest forest;
-    forest.start.assign(n + 1, 0);
-    for (size_t v = 0; v < n; ++v) forest.start[v + 1] = forest.start[v] + childCount[v];
+    for (size_t v = 0; v < n; ++v) forest.start[v + 1] += forest.start[v];
     forest.child.resize(forest.start[n]);
-    for (size_t v = 0; v < n; ++v)
-        for (uint32_t c = 0; c < childCount[v]; ++c) forest.child[forest.start[v] + c] = adjacent[offset[v] + c].second;
+    for (uint32_t v = 0; v < n; ++v)
+        for (uint32_t c = 0; c < forest.childCount(v); ++c)
+            forest.child[forest.start[v] + c] = adjacent[offset[v] + c].second;
     return forest;
 }
 

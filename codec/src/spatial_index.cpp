@@ -50,7 +50,9 @@ private:
     // for the few points its own search by cells leaves uncertain, once
     // that search has freed its tables (igea x4: 35 MB that would have
     // stood beside its 17 MB).
-    VertexIndex& cells() const {
+    const VertexIndex& cells() const { return built(); }
+    VertexIndex& cells() { return built(); }
+    VertexIndex& built() const {
         if (!cells_) cells_.reset(new VertexIndex(grid_, cellShift_));
         return *cells_;
     }
@@ -120,24 +122,24 @@ void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter acce
     };
     size_t settleFrom = count;
     uint64_t cellsVisited = 0;
-    const VertexIndex& cells = this->cells();
-    for (int ring = cells.firstRing(p);; ++ring) {
+    const VertexIndex& index = cells();
+    for (int ring = index.firstRing(p);; ++ring) {
         cellsVisited += VertexIndex::ringCellCount(ring);
-        if (cellsVisited > cells.cellBudget()) {
+        if (cellsVisited > index.cellBudget()) {
             candidates_.clear();
             scratch_.clear();
-            cells.collectAll(scratch_);
+            index.collectAll(scratch_);
             collect(scratch_.data(), scratch_.size());
             settle(INT64_MAX);
             return;
         }
-        cells.forEachCellOfRing(p, ring, INT64_MAX, collectCell);
-        if (cells.ringsCoverGrid(p, ring)) {
+        index.forEachCellOfRing(p, ring, INT64_MAX, collectCell);
+        if (index.ringsCoverGrid(p, ring)) {
             settle(INT64_MAX);
             return;
         }
         if (candidates_.size() < settleFrom) continue;
-        if (settle(cells.clearance2(p, ring))) return;
+        if (settle(index.clearance2(p, ring))) return;
         settleFrom = 2 * candidates_.size();
     }
 }

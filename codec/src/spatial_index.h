@@ -12,7 +12,8 @@
 // drm::NeighbourIndex chooses between them per role.
 //
 // An index refers to the grid it was built on, which must outlive it. Its
-// searches keep scratch buffers: one index serves one thread.
+// searches keep scratch buffers (and the grid's makes its cells when first
+// asked): one index serves one thread.
 #ifndef DRM_SPATIAL_INDEX_H
 #define DRM_SPATIAL_INDEX_H
 

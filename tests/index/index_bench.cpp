@@ -33,9 +33,8 @@ double runOnce(const std::string& role, drm::NeighbourIndex index, const std::ve
                const std::vector<uint8_t>& file) {
     const auto start = std::chrono::steady_clock::now();
     if (role == "graph") {
-        std::vector<uint32_t> neighbours;
-        std::vector<int64_t> distance2;
-        drm::makeSpatialIndex(grid, index, drm::IndexRole::NeighbourGraph)->nearestOfEach(8, neighbours, &distance2);
+        std::vector<uint32_t> neighbours;  // without distances, as the geometry tree asks
+        drm::makeSpatialIndex(grid, index, drm::IndexRole::NeighbourGraph)->nearestOfEach(8, neighbours, nullptr);
     } else {
         drm::DecodeOptions options;
         options.index = index;

@@ -297,7 +297,8 @@ struct EncodeOptions {
     NeighbourIndex index = NeighbourIndex::Auto;  // never changes the file
     // Threads for independent parts of one mesh's encoding (the vertex
     // section beside the mesh checks and, up to 1,048,576 vertices, the
-    // connectivity; the neighbour graph in two halves, the
+    // connectivity (over 262,144 with the vertex section then on one
+    // thread); the neighbour graph in two halves, the
     // spanning forest beside the cheapest-first tree, refine's estimates
     // beside the tree's attempt): 1 keeps everything on the calling thread,
     // 2 or more allows a second (briefly a third: the two estimates, the
