@@ -9,8 +9,8 @@
 // the connectivity keeps to one thread), one of them coarse enough on its
 // grid that refine's estimates run; tests/data's meshes under the option
 // sets that take the other paths (refine with its low bits searched or
-// given, the tree, raw); and the shared corpus (../shared/meshes beside the project, one ctest
-// test per mesh; skipped without it).
+// given, the tree, raw); and the shared corpus (../shared/meshes beside
+// the project, one ctest test per mesh; skipped without it).
 #include <drm/drm.h>
 
 #include <gtest/gtest.h>
