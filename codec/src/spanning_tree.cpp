@@ -49,6 +49,22 @@ NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourI
     return result;
 }
 
+namespace {
+
+// A fixed number of flags, one bit each (std::vector<bool> took more
+// instructions than the searches these spare).
+class Bits {
+public:
+    explicit Bits(size_t count) : words_((count + 63) / 64, 0) {}
+    void set(size_t i) { words_[i / 64] |= uint64_t(1) << (i % 64); }
+    bool test(size_t i) const { return (words_[i / 64] >> (i % 64) & 1) != 0; }
+
+private:
+    std::vector<uint64_t> words_;
+};
+
+}  // namespace
+
 NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count) {
     const size_t row = size_t(nearest.k), n = nearest.neighbours.size() / std::max<size_t>(row, 1);
     const size_t k = std::min<size_t>(size_t(count), row);
@@ -59,7 +75,9 @@ NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count) {
         return std::find(theirs, theirs + k, v) != theirs + k;
     };
     // Each edge once per end: v's own nearest, then those that have v among
-    // theirs without being among v's.
+    // theirs without being among v's. Which reverse edges are missing is
+    // found in the first pass and kept for the second, a bit per neighbour.
+    Bits missingBits(n * k);
     for (int pass = 0; pass < 2; ++pass) {
         std::vector<uint32_t> fill;
         if (pass == 1) {
@@ -71,8 +89,10 @@ NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count) {
             for (size_t j = 0; j < k; ++j) {
                 const uint32_t w = nearest.neighbours[v * row + j];
                 if (w == kNoVertex) break;
-                const bool reverseMissing = !mutual(uint32_t(v), w);  // v is not among w's own
+                // v is not among w's own nearest
+                const bool reverseMissing = pass == 0 ? !mutual(uint32_t(v), w) : missingBits.test(v * k + j);
                 if (pass == 0) {
+                    if (reverseMissing) missingBits.set(v * k + j);
                     ++graph.offset[v + 1];
                     if (reverseMissing) ++graph.offset[w + 1];
                 } else {
@@ -110,18 +130,26 @@ Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbour
     };
     // Counted before they are stored: room for k edges a vertex (128 bytes
     // a vertex) was the largest block of the encoder's peak on igea, and
-    // mutual pairs are kept once.
+    // mutual pairs are kept once. Which are kept is remembered from the
+    // count, a bit per neighbour: the searches of the other end's list cost
+    // as much as the rest of both passes.
+    Bits keptBits(n * k);
     size_t edgeCount = 0;
     for (size_t v = 0; v < n; ++v)
-        for (size_t j = 0; j < k; ++j) edgeCount += kept(v, neighbours[v * k + j]) ? 1 : 0;
+        for (size_t j = 0; j < k; ++j)
+            if (kept(v, neighbours[v * k + j])) {
+                ++edgeCount;
+                keptBits.set(v * k + j);
+            }
     std::vector<Edge<Length>> edges;
     edges.reserve(edgeCount);
     for (size_t v = 0; v < n; ++v)
         for (size_t j = 0; j < k; ++j) {
             const uint32_t w = neighbours[v * k + j];
-            if (!kept(v, w)) continue;
+            if (!keptBits.test(v * k + j)) continue;
             edges.push_back({length2(uint32_t(v), w), uint32_t(std::min<size_t>(v, w)), uint32_t(std::max<size_t>(v, w))});
         }
+    keptBits = Bits(0);
     // Kruskal's forest, compacted in place and trimmed (at most n - 1
     // edges). Edges are taken shortest first, a chunk of n at a time: only
     // the chunk is sorted, and once it is joined, the longer edges whose
