@@ -1,7 +1,8 @@
 // The refinement of geometry coder 3 on its own: every predictor and number
 // of low bits round-trips, on a regular grid, on random triangles with
-// repeated, degenerate and isolated vertices, and the payload reader refuses
-// out-of-range fields with a clear message.
+// repeated, degenerate and isolated vertices; its stream does not depend on
+// the vertex numbering; and the payload reader refuses out-of-range fields
+// with a clear message.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -160,17 +161,12 @@ TEST(GeometryRefine, TruncatedRefinementFailsClearly) {
     }
 }
 
-// Why auto skips refine where the coarse grid crowds (encoder.cpp,
-// kCrowdedCoarseSpacing): where the nearest neighbours lie at most 3 coarse
-// steps apart, the connectivity ranked on the coarse grid costs at least
-// 0.6 bits per vertex more than on the full grid. Checked on the test
-// meshes at every number of low bits that crowds them; should ranking on a
-// crowded grid ever get cheaper, the rule must be measured again.
 // The refinement reaches vertices in the order the triangles first reach
 // them, so where every vertex is in a triangle, its stream does not depend
-// on how the vertices are numbered: the estimate of refine (encoder.cpp)
-// may price it over the input's numbering, before any coarse tree has
-// numbered the vertices. On real meshes, under a random renumbering.
+// on how the vertices are numbered: refine's estimate (encoder.cpp) could
+// price it over the input's numbering, before any coarse tree has numbered
+// the vertices (docs/speed.md, seventeenth session). On real meshes, under
+// a random renumbering.
 TEST(GeometryRefine, TheStreamDoesNotDependOnTheVertexNumbers) {
     std::mt19937 random(17);
     for (const char* name : {"fandisk.ply", "genus3.ply", "mech-holes-shark.ply"}) {
@@ -196,6 +192,12 @@ TEST(GeometryRefine, TheStreamDoesNotDependOnTheVertexNumbers) {
     }
 }
 
+// Why auto skips refine where the coarse grid crowds (encoder.cpp,
+// kCrowdedCoarseSpacing): where the nearest neighbours lie at most 3 coarse
+// steps apart, the connectivity ranked on the coarse grid costs at least
+// 0.6 bits per vertex more than on the full grid. Checked on the test
+// meshes at every number of low bits that crowds them; should ranking on a
+// crowded grid ever get cheaper, the rule must be measured again.
 TEST(GeometryRefine, ACrowdedCoarseGridCostsConnectivity) {
     int crowded = 0;
     for (const char* name : {"bunny-lres.ply", "fandisk.ply", "genus3.ply", "mech-holes-shark.ply"}) {
