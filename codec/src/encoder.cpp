@@ -49,10 +49,12 @@ constexpr size_t kFirstVerticesTried = 4;
 // MiB (367 to 382 bytes a vertex; issue 13's goal: under 400) when the
 // vertex section keeps to one thread (below) and the drm tool maps large
 // blocks on their own (tools/cli.cpp, mapLargeBlocksApart). On igea
-// subdivided twice (2,149,490 vertices) the two threads ran slower than one
-// after the other (14.5 s and 717 MiB, against 12.1 s and 537 MiB): larger
-// meshes code the two stages in turn.
-constexpr size_t kEarlyConnectivityUpToVertices = size_t(1) << 20;
+// subdivided twice (2,149,490 vertices) it takes the encoding from 11.7-12.2
+// to 7.9-8.0 s, the peak from 479 to 728 MiB (355 bytes a vertex); larger
+// meshes code the two stages in turn, for memory. (Until the numbering put
+// points on one grid point in input order, connectivityOrder, igea x16's
+// early connectivity was coded in vain and then again: 14.5 s.)
+constexpr size_t kEarlyConnectivityUpToVertices = size_t(1) << 22;
 // Above this many vertices, a vertex section coded beside the early
 // connectivity keeps to one thread: its own second one (the graph's
 // halves, the forest built beside the cheapest-first tree) added its tables
@@ -361,12 +363,41 @@ VertexSection codeVertexSection(const std::vector<int32_t>& quantized, const Enc
 // sectionOrder (decoded index -> input index) sorted stably by the Morton
 // keys of the points of vertexGrid (input order). Returns connectivity
 // index -> input index.
-std::vector<uint32_t> connectivityOrder(const std::vector<int32_t>& vertexGrid,
-                                        const std::vector<uint32_t>& sectionOrder) {
+//
+// Points on one grid point keep the section's order among themselves. The
+// vertex coder lists them in whatever order its tree reached them, but
+// being one point, which of them sits at which place of the section
+// changes none of its bytes: so they are first put in input order there
+// (sectionOrder is rewritten). The numbering is then the Morton order of
+// the input, the one encodeBeforeVertexSection guesses before the section
+// exists, and its connectivity is kept. Before, a single such pair
+// reached in the other order made the guess wrong and the connectivity
+// was coded twice (igea x16, 284 pairs at 12 bits).
+std::vector<uint32_t> connectivityOrder(const std::vector<int32_t>& vertexGrid, std::vector<uint32_t>& sectionOrder) {
     std::vector<int32_t> inSectionOrder(3 * sectionOrder.size());
     for (size_t d = 0; d < sectionOrder.size(); ++d)
         for (int k = 0; k < 3; ++k) inSectionOrder[3 * d + k] = vertexGrid[3 * size_t(sectionOrder[d]) + k];
     const std::vector<uint32_t> sorted = mortonOrder(inSectionOrder);
+    auto samePoint = [&](uint32_t d, uint32_t e) {
+        return inSectionOrder[3 * size_t(d)] == inSectionOrder[3 * size_t(e)] &&
+               inSectionOrder[3 * size_t(d) + 1] == inSectionOrder[3 * size_t(e) + 1] &&
+               inSectionOrder[3 * size_t(d) + 2] == inSectionOrder[3 * size_t(e) + 2];
+    };
+    std::vector<uint32_t> inputs;
+    for (size_t i = 0; i < sorted.size();) {
+        size_t end = i + 1;
+        while (end < sorted.size() && samePoint(sorted[i], sorted[end])) ++end;
+        if (end - i > 1) {
+            // One point: its places in the section (sorted[i..end), in
+            // increasing order, the sort being stable) take its vertices in
+            // input order.
+            inputs.clear();
+            for (size_t j = i; j < end; ++j) inputs.push_back(sectionOrder[sorted[j]]);
+            std::sort(inputs.begin(), inputs.end());
+            for (size_t j = i; j < end; ++j) sectionOrder[sorted[j]] = inputs[j - i];
+        }
+        i = end;
+    }
     std::vector<uint32_t> order(sorted.size());
     for (size_t i = 0; i < sorted.size(); ++i) order[i] = sectionOrder[sorted[i]];
     return order;
@@ -539,8 +570,9 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
 // The first attempt's connectivity, coded before its vertex section
 // (encodeConnectivity) in the numbering that section will most likely give:
 // Morton order (format 9), points on one grid point in input order. Where
-// no two points coincide, that is certain; elsewhere the order the vertex
-// coder gives such points decides, and encodeWithGeometry compares.
+// no two points coincide, that is certain; elsewhere connectivityOrder
+// puts such points in input order too, and encodeWithGeometry compares the
+// two numberings before it keeps the attempt.
 // The file is written with an empty vertex section until encodeWithGeometry
 // adds the section.
 EarlyConnectivity encodeBeforeVertexSection(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,

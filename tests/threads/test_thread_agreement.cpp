@@ -80,6 +80,33 @@ TEST(ThreadAgreement, TestDataMeshesUnderEveryGeometryCoder) {
         }
 }
 
+// Two copies of one sphere, one on the other's points: every point is on a
+// grid point twice, and the vertex coder reaches many pairs in the other
+// order than the input's. The numbering still takes each pair in input
+// order (encoder.cpp, connectivityOrder), so the connectivity ranked beside
+// the vertex set, in the Morton order of the input, is the one kept: one
+// ranking pass. Before, the connectivity was ranked a second time.
+TEST(ThreadAgreement, PointsOnOneGridPointAreRankedOnce) {
+    drm::Mesh mesh = drm_test::icosphere(6);
+    const size_t n = mesh.vertexCount(), corners = mesh.triangles.size();
+    mesh.positions.insert(mesh.positions.end(), mesh.positions.begin(), mesh.positions.end());
+    for (size_t c = 0; c < corners; ++c) mesh.triangles.push_back(mesh.triangles[c] + uint32_t(n));
+    drm::EncodeOptions options;
+    options.threads = 2;
+    int rankingPasses = 0;
+    std::string last;
+    options.progress = [&](double, const char* stage) {
+        if (std::string(stage) == "ranking" && last != "ranking") ++rankingPasses;
+        last = stage;
+        return true;
+    };
+    const drm::Encoded encoded = drm::encode(mesh, options);
+    EXPECT_EQ(rankingPasses, 1);
+    EXPECT_EQ(drm::decode(encoded.bytes.data(), encoded.bytes.size()).mesh.triangles.size(), mesh.triangles.size());
+    options.progress = nullptr;
+    expectThreadsAgree(mesh, options);
+}
+
 // A cancel while the vertex coder runs on the second thread (the progress
 // callback refuses the cut, which the calling thread makes meanwhile) ends
 // the encoding with Cancelled, after the thread is done; the same options

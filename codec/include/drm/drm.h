@@ -296,7 +296,7 @@ struct EncodeOptions {
     bool searchStarts = true;
     NeighbourIndex index = NeighbourIndex::Auto;  // never changes the file
     // Threads for independent parts of one mesh's encoding (the vertex
-    // section beside the mesh checks and, up to 1,048,576 vertices, the
+    // section beside the mesh checks and, up to 4,194,304 vertices, the
     // connectivity (over 262,144 with the vertex section then on one
     // thread); the neighbour graph in two halves, the
     // spanning forest beside the cheapest-first tree, refine's estimates
