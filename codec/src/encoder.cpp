@@ -134,7 +134,7 @@ struct ComponentStarts {
 struct EarlyConnectivity {
     Attempt attempt;
     std::vector<uint32_t> order;  // connectivity index -> input index
-    bool certain = false;         // no two points coincide: order is the section's numbering
+    bool certain = false;         // no two points coincide: order is the section's numbering, unchecked
 };
 
 // Writes the attempt's file with the given vertex section. An attempt
@@ -547,8 +547,9 @@ Attempt encodeWithGeometry(const Mesh& mesh, const PreparedMesh& prepared, const
         return encodeInOrder(std::move(section.encoding.order), false);
     }
     Attempt best;
-    // The early attempt's numbering is the one this section gives wherever
-    // no two points coincide; elsewhere it is compared.
+    // The early attempt's numbering is the one this section gives: wherever
+    // no two points coincide, certainly; elsewhere connectivityOrder makes
+    // it so, and the comparison is a safeguard.
     std::vector<uint32_t> order;
     if (!early || !early->certain) order = connectivityOrder(vertexGrid, section.encoding.order);
     if (early && (early->certain || early->order == order)) {
