@@ -372,7 +372,7 @@ VertexSection codeVertexSection(const std::vector<int32_t>& quantized, const Enc
 // the input, the one encodeBeforeVertexSection guesses before the section
 // exists, and its connectivity is kept. Before, a single such pair
 // reached in the other order made the guess wrong and the connectivity
-// was coded twice (igea x16, 284 pairs at 12 bits).
+// was coded twice (igea x16: 284 more points than grid points at 12 bits).
 std::vector<uint32_t> connectivityOrder(const std::vector<int32_t>& vertexGrid, std::vector<uint32_t>& sectionOrder) {
     std::vector<int32_t> inSectionOrder(3 * sectionOrder.size());
     for (size_t d = 0; d < sectionOrder.size(); ++d)
