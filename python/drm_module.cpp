@@ -61,6 +61,7 @@ py::dict statsDict(const drm::Stats& s, bool decoded) {
     levers["confidence_context"] = s.levers.confidenceContext;
     levers["angle_order"] = s.levers.angleOrder;
     levers["front_neighbours"] = s.levers.frontNeighbours;
+    levers["boundary_flag"] = s.levers.boundaryFlag;
     d["levers"] = levers;
     d["header_bytes"] = s.headerBytes;
     d["connectivity_bytes"] = s.connectivityBytes;

@@ -61,6 +61,7 @@ std::string leverList(const drm::Levers& levers) {
     add(levers.confidenceContext, "confidence contexts");
     add(levers.angleOrder, "angle order");
     add(levers.frontNeighbours, "front neighbours");
+    add(levers.boundaryFlag, "boundary flags");
     return out.empty() ? "none (the paper's method)" : out;
 }
 
@@ -96,7 +97,8 @@ void printJson(const std::string& path, const drm::Stats& s, bool ranks) {
                         ", \"gap_closing\": " + boolean(s.levers.gapClosing) +
                         ", \"confidence_context\": " + boolean(s.levers.confidenceContext) +
                         ", \"angle_order\": " + boolean(s.levers.angleOrder) +
-                        ", \"front_neighbours\": " + boolean(s.levers.frontNeighbours) + "}");
+                        ", \"front_neighbours\": " + boolean(s.levers.frontNeighbours) +
+                        ", \"boundary_flag\": " + boolean(s.levers.boundaryFlag) + "}");
     field("header_bytes", number(s.headerBytes));
     field("connectivity_bytes", number(s.connectivityBytes));
     field("geometry_bytes", number(s.geometryBytes));

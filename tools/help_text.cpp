@@ -49,7 +49,7 @@ std::vector<std::pair<std::string, std::string>> placeholders() {
         {"{default-normal-bits}", std::to_string(defaults.normalBits)},
         {"{uv-bits}", range(drm::kMinUvBits, drm::kMaxUvBits)},
         {"{default-uv-bits}", std::to_string(defaults.uvBits)},
-        {"{levers}", listed(levers, ", ")},  // "filter, gap, context, angle, front"
+        {"{levers}", listed(levers, ", ")},  // "filter, gap, context, angle, front, boundary"
         {"{predictors}", listed(predictors, " or ")},
         {"{default-predictor}", drm::predictorName(defaults.predictor)},
         {"{geometry-coders}", listed(coders, " or ")},

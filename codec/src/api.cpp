@@ -10,7 +10,7 @@ namespace drm {
 const char* version() { return "0.1.0"; }
 
 const char* leverName(int lever) {
-    static const char* const names[kLeverCount] = {"filter", "gap", "context", "angle", "front"};
+    static const char* const names[kLeverCount] = {"filter", "gap", "context", "angle", "front", "boundary"};
     return lever >= 0 && lever < kLeverCount ? names[lever] : nullptr;
 }
 
@@ -83,8 +83,9 @@ Levers parseLevers(const std::string& list) {
         else if (name == leverName(2)) levers.confidenceContext = true;
         else if (name == leverName(3)) levers.angleOrder = true;
         else if (name == leverName(4)) levers.frontNeighbours = true;
+        else if (name == leverName(5)) levers.boundaryFlag = true;
         else {
-            std::string names;  // "filter, gap, context, angle, front"
+            std::string names;  // "filter, gap, context, angle, front, boundary"
             for (int l = 0; l < kLeverCount; ++l) names += std::string(l == 0 ? "" : ", ") + leverName(l);
             throw Error(ErrorKind::InvalidInput, "unknown lever '" + name + "' (use all, none, or a list of " + names + ")");
         }
@@ -94,7 +95,8 @@ Levers parseLevers(const std::string& list) {
 }
 
 std::string leversName(const Levers& l) {
-    if (l.topologicalFilter && l.gapClosing && l.confidenceContext && l.angleOrder && l.frontNeighbours) return "all";
+    if (l.topologicalFilter && l.gapClosing && l.confidenceContext && l.angleOrder && l.frontNeighbours && l.boundaryFlag)
+        return "all";
     std::string names;
     auto add = [&](bool on, const char* name) {
         if (on) names += (names.empty() ? "" : ",") + std::string(name);
@@ -104,6 +106,7 @@ std::string leversName(const Levers& l) {
     add(l.confidenceContext, leverName(2));
     add(l.angleOrder, leverName(3));
     add(l.frontNeighbours, leverName(4));
+    add(l.boundaryFlag, leverName(5));
     return names.empty() ? "none" : names;
 }
 

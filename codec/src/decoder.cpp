@@ -107,7 +107,7 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
     Traversal traversal(d.traversalVertices, expectedFaces, candidates.get());
     EdgeModel model(result.quantized, header.grid.bits - d.vertices.lowBits, header.predictor, header.curvature,
                     header.levers, faceCount, *candidates, traversal, d.parts.formatVersion);
-    RankDecoder coder(d.parts.connectivity, d.parts.connectivitySize, model.contextCount());
+    RankDecoder coder(d.parts.connectivity, d.parts.connectivitySize, model.contextCount(), header.levers.boundaryFlag);
     std::vector<uint64_t>& histogram = result.stats.rankHistogram;
 
     const bool startsInStream = d.parts.formatVersion >= kFirstFormatWithStartsInConnectivity;
@@ -144,7 +144,8 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
         }
         OpenEdge edge;
         while (traversal.popOpenEdge(edge)) {
-            const uint32_t rank = coder.get(model.forecast(edge).context);
+            const EdgeForecast& forecast = model.forecast(edge);
+            const uint32_t rank = coder.get(forecast.context, forecast.boundaryClass);
             if (coder.bytesPastEnd() > 0)
                 throw Error(ErrorKind::Corrupt, "corrupt file: the connectivity section ends before the last face");
             if (rank >= histogram.size()) {

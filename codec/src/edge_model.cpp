@@ -6,6 +6,7 @@
 
 #include "gap_closing.h"
 #include "quantize.h"
+#include "rank_coder.h"
 
 namespace drm {
 namespace {
@@ -86,6 +87,18 @@ double cosineSubtended(Vec3 a, Vec3 b, Vec3 v) {
     return uu == 0 || ww == 0 ? 1.0 : dot(u, w) / std::sqrt(uu * ww);
 }
 
+// Format 10, the boundary flag's context class (0 .. kBoundaryClasses - 1):
+// where the size step found the first vertex ahead of the edge (in its
+// first ball, in a wider one, or nowhere: past an open border there is
+// nothing ahead), and how many of the fans at the edge's ends already end
+// on a coded boundary (0, 1 or 2: a border is coded edge after edge). On
+// mountain, a terrain with one border, 634 of the 636 boundary edges have
+// no vertex ahead, against 23 of its 50,500 other edges.
+int boundaryClass(int firstAheadAttempt, const FanEnds& ends) {
+    const int ahead = firstAheadAttempt == 0 ? 0 : firstAheadAttempt > 0 ? 1 : 2;
+    return 3 * ahead + int(ends.boundaryAtI) + int(ends.boundaryAtJ);
+}
+
 }  // namespace
 
 EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature,
@@ -110,7 +123,8 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     EdgeForecast& f = forecast_;
     f.prediction = snapPrediction(predictor_.predict(edge), bits_);
     FanEnds ends;
-    if (levers_.gapClosing || frontLever_) ends = fanEnds(edge, admissible_.traversal());
+    if (levers_.gapClosing || frontLever_ || levers_.boundaryFlag) ends = fanEnds(edge, admissible_.traversal());
+    f.boundaryClass = levers_.boundaryFlag ? boundaryClass(predictor_.firstAheadAttempt(), ends) : -1;
     f.preferred = levers_.gapClosing ? gapClosingVertex(edge, ends, grid_, admissible_) : kNoVertex;
     f.context = 0;
     f.nearest.clear();

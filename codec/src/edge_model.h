@@ -21,6 +21,7 @@ struct EdgeForecast {
     FixedPoint prediction;
     uint32_t preferred = kNoVertex;  // gap-closing vertex, rank 1 when present (format 5 with the front lever: listed first in `nearest` instead)
     int context = 0;                     // coder context, < EdgeModel::contextCount()
+    int boundaryClass = -1;              // the boundary flag's context (format 10), or -1 without the lever
     std::vector<RankedVertex> nearest;   // the listed candidates, in rank order (confidence / angle / front levers)
 };
 

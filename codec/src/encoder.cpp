@@ -170,7 +170,7 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
     Traversal traversal(numbered.vertexCount, faceCount, candidates.get());
     EdgeModel model(grid, options.bits - numbered.lowBits, predictor, options.curvature, options.levers, faceCount,
                     *candidates, traversal);
-    RankEncoder coder(model.contextCount());
+    RankEncoder coder(model.contextCount(), options.levers.boundaryFlag);
 
     FileHeader header;
     header.vertexCount = numbered.order.size();
@@ -231,7 +231,8 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
             uint32_t face = 0;
             const uint32_t apex = topology.apexAcross(edge.vi, edge.vj, &face);
             uint32_t rank = 0;
-            const int context = model.forecast(edge).context;
+            const EdgeForecast& forecast = model.forecast(edge);
+            const int context = forecast.context, boundaryClass = forecast.boundaryClass;
             if (apex == kNoVertex) {
                 traversal.closeAsBoundary(edge);
             } else {
@@ -245,7 +246,7 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
                 result.faceRank[prepared.inputFace.empty() ? face : prepared.inputFace[face]] = rank;
                 ++attachedCount;
             }
-            coder.put(rank, context);
+            coder.put(rank, context, boundaryClass);
             if (rank >= stats.rankHistogram.size()) stats.rankHistogram.resize(size_t(rank) + 1, 0);
             ++stats.rankHistogram[rank];
             progress.tick(0.05 + 0.9 * double(attachedCount) / double(faceCount));
@@ -495,7 +496,7 @@ Attempt encodeNumbered(const Mesh& mesh, const PreparedMesh& prepared, const Man
     }
     const bool anyLever = options.levers.topologicalFilter || options.levers.gapClosing ||
                           options.levers.confidenceContext || options.levers.angleOrder ||
-                          options.levers.frontNeighbours;
+                          options.levers.frontNeighbours || options.levers.boundaryFlag;
     if (options.tryWithoutLevers && anyLever && faces < kTryWithoutLeversBelowFaces) {
         EncodeOptions plain = options;
         plain.levers = Levers::none();

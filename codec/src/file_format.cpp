@@ -43,6 +43,7 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
                      (h.levers.angleOrder ? kFlagAngleOrder : 0) | (h.keepsVertexOrder ? kFlagVertexOrder : 0) |
                      (h.hasRepairs ? kFlagRepairs : 0) | (h.attributeSections > 0 ? kFlagAttributes : 0) |
                      (h.levers.frontNeighbours ? kFlagFrontNeighbours : 0) |
+                     (h.levers.boundaryFlag ? kFlagBoundaryFlag : 0) |
                      (h.mortonNumbering ? 0 : kFlagSectionNumbering)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
@@ -61,7 +62,10 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
 FileHeader decodeHeader(ByteReader& in, int version) {
     FileHeader h;
     const uint16_t flags = in.u16("flags");
-    const uint16_t known = version >= 9 ? kKnownFlags : version >= 5 ? kKnownFlagsBefore9 : kKnownFlagsBefore5;
+    const uint16_t known = version >= kFirstFormatWithBoundaryFlag ? kKnownFlags
+                           : version >= 9                           ? kKnownFlagsBefore10
+                           : version >= 5                           ? kKnownFlagsBefore9
+                                                                    : kKnownFlagsBefore5;
     if (flags & ~known) throw Error(ErrorKind::Corrupt, "corrupt file: unknown header flags " + std::to_string(flags));
     h.curvature = (flags & kFlagCurvature) != 0;
     h.levers.topologicalFilter = (flags & kFlagTopologicalFilter) != 0;
@@ -69,6 +73,7 @@ FileHeader decodeHeader(ByteReader& in, int version) {
     h.levers.confidenceContext = (flags & kFlagConfidenceContext) != 0;
     h.levers.angleOrder = (flags & kFlagAngleOrder) != 0;
     h.levers.frontNeighbours = (flags & kFlagFrontNeighbours) != 0;
+    h.levers.boundaryFlag = (flags & kFlagBoundaryFlag) != 0;
     h.keepsVertexOrder = (flags & kFlagVertexOrder) != 0;
     h.hasRepairs = (flags & kFlagRepairs) != 0;
     h.mortonNumbering = version >= kFirstFormatWithMortonNumbering && !(flags & kFlagSectionNumbering);

@@ -16,6 +16,8 @@ constexpr int kFirstFormatWithStartsInConnectivity = 8;
 // From 9 the connectivity numbers the vertices in Morton order of their
 // grid points (morton_order.h), and the decoder gives them in that order.
 constexpr int kFirstFormatWithMortonNumbering = 9;
+// From 10 a header flag may set the boundary flag lever.
+constexpr int kFirstFormatWithBoundaryFlag = 10;
 
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
 constexpr uint16_t kFormatVersion = kFileFormatVersion;  // written; read: drm.h's readable range
@@ -34,9 +36,12 @@ constexpr uint16_t kFlagFrontNeighbours = 256;  // format 5 on
 // Format 9 on: the connectivity numbers the vertices in the vertex
 // section's order, as formats 1 to 8 did, instead of Morton order.
 constexpr uint16_t kFlagSectionNumbering = 512;
+// Format 10 on: the boundary flag lever (Levers::boundaryFlag).
+constexpr uint16_t kFlagBoundaryFlag = 1024;
 constexpr uint16_t kKnownFlagsBefore5 = 255;
 constexpr uint16_t kKnownFlagsBefore9 = 511;
-constexpr uint16_t kKnownFlags = 1023;
+constexpr uint16_t kKnownFlagsBefore10 = 1023;
+constexpr uint16_t kKnownFlags = 2047;
 constexpr uint64_t kMaxAttributeSections = 32;
 
 struct FileHeader {

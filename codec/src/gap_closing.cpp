@@ -9,18 +9,21 @@ namespace {
 // Walks the rebuilt fan around `center` from the triangle (center, start, o)
 // in the direction that leaves through edges into center, and returns the far
 // vertex of the fan's last open edge, or kNoVertex if the fan ends on a
-// coded boundary. `clockwise` picks the walking direction:
+// coded boundary (then *boundary is set). `clockwise` picks the walking direction:
 //  false: from (vi, vj, o) at vi, the edge into vi is (o, vi); its twin (vi, o)
 //         holds the next triangle (vi, o, o2), whose edge into vi is (o2, vi)...
 //  true:  the mirror walk at vj, through edges out of vj.
-uint32_t fanEnd(const Traversal& t, uint32_t center, uint32_t o, bool clockwise) {
+uint32_t fanEnd(const Traversal& t, uint32_t center, uint32_t o, bool clockwise, bool* boundary) {
     uint32_t far = o;
     // A manifold fan has at most valence-many triangles; the bound guards
     // against cycling on inputs the checks should already have refused.
     for (size_t step = 0; step < t.vertexCount(); ++step) {
         const uint32_t next = clockwise ? t.thirdVertex(far, center) : t.thirdVertex(center, far);
         if (next == Traversal::kNoTriangle) return far;
-        if (next == Traversal::kBoundary) return kNoVertex;
+        if (next == Traversal::kBoundary) {
+            *boundary = true;
+            return kNoVertex;
+        }
         far = next;
     }
     return kNoVertex;
@@ -42,8 +45,8 @@ FanEnds fanEnds(const OpenEdge& edge, const Traversal& t) {
     // A fan piece of one triangle leaves the opposite vertex as the "gap"
     // vertex: that is the back face, not a gap.
     FanEnds ends;
-    ends.atI = fanEnd(t, edge.vi, edge.opposite, false);
-    ends.atJ = fanEnd(t, edge.vj, edge.opposite, true);
+    ends.atI = fanEnd(t, edge.vi, edge.opposite, false, &ends.boundaryAtI);
+    ends.atJ = fanEnd(t, edge.vj, edge.opposite, true, &ends.boundaryAtJ);
     if (ends.atI == edge.opposite) ends.atI = kNoVertex;
     if (ends.atJ == edge.opposite) ends.atJ = kNoVertex;
     return ends;

@@ -21,6 +21,8 @@ namespace drm {
 // These are the edge's front neighbours.
 struct FanEnds {
     uint32_t atI = kNoVertex, atJ = kNoVertex;
+    // Whether the fan at vi (vj) ends on a coded boundary.
+    bool boundaryAtI = false, boundaryAtJ = false;
 };
 FanEnds fanEnds(const OpenEdge& edge, const Traversal& traversal);
 

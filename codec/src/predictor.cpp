@@ -41,6 +41,7 @@ ApexPredictor::ApexPredictor(Predictor kind, bool curvature, const std::vector<i
 
 Vec3 ApexPredictor::predict(const OpenEdge& edge) {
     searchedBall_ = false;
+    firstAheadAttempt_ = -1;
     const Vec3 a = gridPoint(grid_, edge.vi), b = gridPoint(grid_, edge.vj);
     Vec3 p = baseApex(kind_, a, b, gridPoint(grid_, edge.opposite));
     if (norm2(b - a) == 0) return p;  // coincident ends: no edge frame to correct in
@@ -132,7 +133,10 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
                 first = v;
             }
         }
-        if (first != kNoIndex) return mid + (p - mid) * (firstHeight / height);
+        if (first != kNoIndex) {
+            firstAheadAttempt_ = attempt;
+            return mid + (p - mid) * (firstHeight / height);
+        }
     }
     return p;
 }

@@ -56,6 +56,10 @@ public:
     void forEachInBall(Visit visit) const {
         for (size_t i = 0; i < inBallCount_; ++i) visit(inBall_[i].id, inBall_[i].point);
     }
+    // Which of the last predict()'s balls held the first vertex ahead (0:
+    // the first; 1 to 3: one of the wider ones), or -1 if none did or none
+    // was searched. The boundary flag's context (format 10).
+    int firstAheadAttempt() const { return firstAheadAttempt_; }
 
 private:
     Vec3 bendOntoSurface(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
@@ -69,6 +73,7 @@ private:
     PredictorTuning tuning_;
     std::vector<uint32_t> nearby_;  // scratch, reused by every query
     bool searchedBall_ = false;
+    int firstAheadAttempt_ = -1;
     // The last search's vertices within its ball, their coordinates where
     // the index keeps them.
     struct BallVertex {

@@ -33,10 +33,11 @@ constexpr uint32_t kMaxEscapeBits = 32;
 // 0 and 3 next, so starting them ahead shortens the learning phase of each
 // context (worth about 4% on a 1000-rank stream against a flat start, and
 // the weight of one or two observations, so real statistics soon override
-// it). Every symbol needs a count of at least 1.
-std::vector<uint16_t> rankPrior() {
+// it). Every symbol needs a count of at least 1. With boundary flags
+// (format 10) rank 0 never comes as a rank: it keeps the least count.
+std::vector<uint16_t> rankPrior(bool boundaryFlags) {
     std::vector<uint16_t> counts(kRankDirectSymbols + 1, 1);
-    counts[0] = 4;
+    counts[0] = boundaryFlags ? 1 : 4;
     counts[1] = 32;
     counts[2] = 8;
     counts[3] = 2;
@@ -126,10 +127,10 @@ void AdaptiveFrequencies::update(uint32_t symbol) {
     }
 }
 
-RankContexts::RankContexts(int extraContexts)
+RankContexts::RankContexts(int extraContexts, bool boundaryFlags)
     : extraContexts_(checkedExtraContexts(extraContexts)),
-      parents_(kRankClasses, AdaptiveFrequencies(rankPrior())),
-      tables_(size_t(kRankClasses) * size_t(extraContexts_), AdaptiveFrequencies(rankPrior())),
+      parents_(kRankClasses, AdaptiveFrequencies(rankPrior(boundaryFlags))),
+      tables_(size_t(kRankClasses) * size_t(extraContexts_), AdaptiveFrequencies(rankPrior(boundaryFlags))),
       seeded_(tables_.size(), 0) {}
 
 AdaptiveFrequencies& RankContexts::table(int previousClass, int extraContext) {
@@ -142,10 +143,31 @@ AdaptiveFrequencies& RankContexts::table(int previousClass, int extraContext) {
     return tables_[index];
 }
 
-RankEncoder::RankEncoder(int extraContexts)
-    : ranks_(extraContexts), escapeLengths_(escapeLengthPrior()), startLengths_(startLengthModels()) {}
+BoundaryFlags::BoundaryFlags(bool on) {
+    // "Not a boundary edge" starts four times as likely: most edges are not
+    // (a closed mesh has none), and borders soon teach their classes.
+    if (on) tables_.assign(2 * kBoundaryClasses, AdaptiveFrequencies({4, 1}));
+}
 
-void RankEncoder::put(uint32_t rank, int extraContext) {
+AdaptiveFrequencies& BoundaryFlags::table(int edgeClass) {
+    if (edgeClass < 0 || edgeClass >= kBoundaryClasses)
+        throw Error(ErrorKind::Internal, "internal error: boundary class " + std::to_string(edgeClass) + " is outside [0, " +
+                    std::to_string(kBoundaryClasses) + ")");
+    return tables_[size_t(2 * edgeClass + (previous_ ? 1 : 0))];
+}
+
+RankEncoder::RankEncoder(int extraContexts, bool boundaryFlags)
+    : ranks_(extraContexts, boundaryFlags), escapeLengths_(escapeLengthPrior()), startLengths_(startLengthModels()),
+      boundary_(boundaryFlags) {}
+
+void RankEncoder::put(uint32_t rank, int extraContext, int boundaryClass) {
+    if (boundary_.on()) {
+        boundary_.encode(coder_, boundaryClass, rank == 0);
+        if (rank == 0) {
+            previousClass_ = rankClass(0);
+            return;
+        }
+    }
     AdaptiveFrequencies& model = ranks_.table(previousClass_, extraContext);
     const uint32_t symbol = rank < kRankDirectSymbols ? rank : kEscape;
     model.encode(coder_, symbol);
@@ -161,9 +183,9 @@ void RankEncoder::putStartGap(StartField field, uint32_t gap) {
 
 std::vector<uint8_t> RankEncoder::finish() { return coder_.finish(); }
 
-RankDecoder::RankDecoder(const uint8_t* data, size_t size, int extraContexts)
-    : coder_(data, size), ranks_(extraContexts), escapeLengths_(escapeLengthPrior()),
-      startLengths_(startLengthModels()) {}
+RankDecoder::RankDecoder(const uint8_t* data, size_t size, int extraContexts, bool boundaryFlags)
+    : coder_(data, size), ranks_(extraContexts, boundaryFlags), escapeLengths_(escapeLengthPrior()),
+      startLengths_(startLengthModels()), boundary_(boundaryFlags) {}
 
 uint32_t RankDecoder::getStartGap(StartField field) {
     const uint64_t w = decodeExpGolomb(coder_, startLengths_[size_t(field)]);
@@ -172,9 +194,15 @@ uint32_t RankDecoder::getStartGap(StartField field) {
     return uint32_t(w - 1);
 }
 
-uint32_t RankDecoder::get(int extraContext) {
+uint32_t RankDecoder::get(int extraContext, int boundaryClass) {
+    if (boundary_.on() && boundary_.decode(coder_, boundaryClass)) {
+        previousClass_ = rankClass(0);
+        return 0;
+    }
     AdaptiveFrequencies& model = ranks_.table(previousClass_, extraContext);
     uint32_t rank = model.decode(coder_);
+    if (rank == 0 && boundary_.on())
+        throw Error(ErrorKind::Corrupt, "corrupt connectivity stream: rank 0 after a boundary flag that said no");
     ranks_.observed(previousClass_, rank);
     if (rank == kEscape) {
         const uint64_t w = decodeExpGolomb(coder_, escapeLengths_);

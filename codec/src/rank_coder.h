@@ -9,6 +9,11 @@
 //
 // From format 8 the stream also holds each component's start triangle, as
 // three gaps (putStartGap) before the component's first rank.
+//
+// With the boundary flag lever (format 10) every edge first gets a yes or
+// no, "boundary edge", in a context of its class (EdgeModel's
+// boundaryClass) and of whether the edge before was one; only an edge that
+// is not gets a rank, and rank 0 then never comes.
 #ifndef DRM_RANK_CODER_H
 #define DRM_RANK_CODER_H
 
@@ -22,6 +27,8 @@ namespace drm {
 
 // Ranks 0..kRankDirectSymbols-1 are coded as symbols of their own.
 constexpr uint32_t kRankDirectSymbols = 24;
+// The boundary flag's edge classes (format 10).
+constexpr int kBoundaryClasses = 9;
 
 // The fields of a start triangle (format 8, docs/format.md): the first
 // vertex's distance from the decoder's cursor, then the other two vertices'
@@ -69,7 +76,9 @@ private:
 // meshes (torus, 576 faces: 9 bytes unseeded, 2 seeded).
 class RankContexts {
 public:
-    explicit RankContexts(int extraContexts);
+    // boundaryFlags: rank 0 is coded apart (format 10), so the tables
+    // start with the least count for it.
+    RankContexts(int extraContexts, bool boundaryFlags);
     AdaptiveFrequencies& table(int previousClass, int extraContext);
     void observed(int previousClass, uint32_t symbol) { parents_[size_t(previousClass)].observe(symbol); }
     int extraContexts() const { return extraContexts_; }
@@ -81,12 +90,37 @@ private:
     std::vector<uint8_t> seeded_;
 };
 
+// Format 10's boundary flags: a yes/no table per edge class and whether
+// the edge before was a boundary edge.
+class BoundaryFlags {
+public:
+    explicit BoundaryFlags(bool on);
+    bool on() const { return !tables_.empty(); }
+    template <class Coder>
+    void encode(Coder& coder, int edgeClass, bool boundary) {
+        table(edgeClass).encode(coder, boundary ? 1 : 0);
+        previous_ = boundary;
+    }
+    bool decode(RangeDecoder& coder, int edgeClass) {
+        previous_ = table(edgeClass).decode(coder) != 0;
+        return previous_;
+    }
+
+private:
+    AdaptiveFrequencies& table(int edgeClass);
+    std::vector<AdaptiveFrequencies> tables_;  // [edge class][previous edge a boundary]
+    bool previous_ = false;
+};
+
 class RankEncoder {
 public:
     // extraContexts >= 1 is the number of values of the caller's context.
-    explicit RankEncoder(int extraContexts = 1);
-    // rank: any value (0 = boundary edge); extraContext in [0, extraContexts).
-    void put(uint32_t rank, int extraContext = 0);
+    // boundaryFlags: a boundary flag before each rank (format 10).
+    explicit RankEncoder(int extraContexts = 1, bool boundaryFlags = false);
+    // rank: any value (0 = boundary edge); extraContext in [0, extraContexts);
+    // boundaryClass in [0, kBoundaryClasses) with boundary flags, else
+    // ignored.
+    void put(uint32_t rank, int extraContext = 0, int boundaryClass = 0);
     // Any uint32 gap, as an adaptive Exp-Golomb code (its bit length in
     // field's model, then the bits below its leading one). The rank context
     // is left as it was.
@@ -99,15 +133,17 @@ private:
     RankContexts ranks_;
     AdaptiveFrequencies escapeLengths_;       // bit lengths of escaped ranks
     std::vector<AdaptiveFrequencies> startLengths_;  // [StartField]: bit lengths of gap + 1
+    BoundaryFlags boundary_;
     int previousClass_ = 0;
 };
 
 class RankDecoder {
 public:
-    RankDecoder(const uint8_t* data, size_t size, int extraContexts = 1);
+    RankDecoder(const uint8_t* data, size_t size, int extraContexts = 1, bool boundaryFlags = false);
     // The next rank. Throws Error if the stream holds a rank that does not
     // fit in 32 bits (corrupt data); otherwise any input decodes to values.
-    uint32_t get(int extraContext = 0);
+    // boundaryClass as RankEncoder::put takes it.
+    uint32_t get(int extraContext = 0, int boundaryClass = 0);
     // The gap putStartGap coded; throws Error if it does not fit in 32 bits.
     uint32_t getStartGap(StartField field);
     // See RangeDecoder::bytesPastEnd: 0 after the last rank of an intact
@@ -119,6 +155,7 @@ private:
     RankContexts ranks_;
     AdaptiveFrequencies escapeLengths_;
     std::vector<AdaptiveFrequencies> startLengths_;
+    BoundaryFlags boundary_;
     int previousClass_ = 0;
 };
 

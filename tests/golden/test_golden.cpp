@@ -8,7 +8,8 @@
 // neighbours; v5/: before format 6's sign contexts; v6/: before format 7's
 // frame along the walk and tangent signs; v7/: before format 8's start
 // triangles in the connectivity section; v8/: before format 9's Morton
-// numbering), so the decoder keeps reading what users already have.
+// numbering; v9/: before format 10's boundary flags), so the decoder keeps
+// reading what users already have.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -82,6 +83,17 @@ TEST(GoldenFormat5, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden(
 TEST(GoldenFormat5, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v5", 5); }
 TEST(GoldenFormat5, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v5", 5); }
 TEST(GoldenFormat5, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v5", 5); }
+// Format 9's files, as its last encoder (6f50905) wrote them: boundary
+// edges coded as rank 0 among the ranks.
+TEST(GoldenFormat9, Torus) { expectDecodesToGolden("torus", "/v9", 9); }
+TEST(GoldenFormat9, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v9", 9); }
+TEST(GoldenFormat9, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v9", 9); }
+TEST(GoldenFormat9, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v9", 9); }
+TEST(GoldenFormat9, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v9", 9); }
+TEST(GoldenFormat9, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v9", 9); }
+TEST(GoldenFormat9, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres", "/v9", 9); }
+TEST(GoldenFormat9, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine", "/v9", 9); }
+
 // Format 8's files, as its last encoder (ba39120) wrote them: the
 // connectivity numbers the vertices in the vertex section's order.
 TEST(GoldenFormat8, Torus) { expectDecodesToGolden("torus", "/v8", 8); }
@@ -146,7 +158,7 @@ uint8_t highFlags(const std::string& file) {
 // files and later ones set it.
 TEST(GoldenFormat4, FrontNeighbourFlagIsRefused) {
     expectFlagRefused("/v4/blobby-3cc.drm", 0);
-    for (const char* folder : {"/v5", "/v6", "/v7", "/v8", ""})
+    for (const char* folder : {"/v5", "/v6", "/v7", "/v8", "/v9", ""})
         EXPECT_EQ(highFlags(std::string(folder) + "/blobby-3cc.drm") & 1, 1) << folder;
 }
 
@@ -157,6 +169,14 @@ TEST(GoldenFormat8, SectionNumberingFlagIsRefused) {
     expectFlagRefused("/v8/bunny-lres.drm", 1);
     EXPECT_EQ(highFlags("/star-raw.drm") & 2, 2);
     EXPECT_EQ(highFlags("/bunny-lres.drm") & 2, 0);
+}
+
+// Header flag bit 10 (boundary flags) exists from format 10 on; files
+// written with every lever set it, the paper's method does not.
+TEST(GoldenFormat9, BoundaryFlagIsRefused) {
+    expectFlagRefused("/v9/blobby-3cc.drm", 2);
+    EXPECT_EQ(highFlags("/blobby-3cc.drm") & 4, 4);
+    EXPECT_EQ(highFlags("/nefertiti.drm") & 4, 0);
 }
 
 }  // namespace

@@ -204,8 +204,8 @@ std::vector<uint8_t> recodeConnectivity(const std::vector<uint8_t>& file, size_t
     Traversal traversal(n, size_t(header.faceCount), candidates.get());
     EdgeModel model(grid, header.grid.bits, header.predictor, header.curvature, header.levers, header.faceCount,
                     *candidates, traversal, parts.formatVersion);
-    RankDecoder in(parts.connectivity, parts.connectivitySize, model.contextCount());
-    RankEncoder out(model.contextCount());
+    RankDecoder in(parts.connectivity, parts.connectivitySize, model.contextCount(), header.levers.boundaryFlag);
+    RankEncoder out(model.contextCount(), header.levers.boundaryFlag);
     StartCursor cursor(traversal);
     uint32_t lastStart = 0;
     for (size_t c = 0; c < header.componentCount; ++c) {
@@ -223,9 +223,9 @@ std::vector<uint8_t> recodeConnectivity(const std::vector<uint8_t>& file, size_t
         out.putStartGap(StartField::Third, written.third);
         OpenEdge edge;
         while (traversal.popOpenEdge(edge)) {
-            const int context = model.forecast(edge).context;
-            const uint32_t rank = in.get(context);
-            out.put(rank, context);
+            const EdgeForecast& forecast = model.forecast(edge);
+            const uint32_t rank = in.get(forecast.context, forecast.boundaryClass);
+            out.put(rank, forecast.context, forecast.boundaryClass);
             if (rank == 0) {
                 traversal.closeAsBoundary(edge);
                 continue;

@@ -77,9 +77,9 @@ constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
-constexpr int kFileFormatVersion = 9;
+constexpr int kFileFormatVersion = 10;
 constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 9;
+constexpr int kNewestReadableFormatVersion = 10;
 
 // The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
 // MeshLab rank filter, README's legend): bucket 0 is a component's start
@@ -220,17 +220,25 @@ struct Levers {
     // CAD meshes gain, smooth scans would lose). With confidence contexts,
     // edges ranked in the front order have contexts of their own.
     bool frontNeighbours = true;
+    // Format 10: whether an edge is a boundary edge (rank 0) is coded as a
+    // yes or no of its own, before any rank, in contexts of what the
+    // decoder sees around the edge: whether the size step found a vertex
+    // ahead of it (in its first ball, a wider one, or none), how many of
+    // the fans at its ends end on a coded boundary, and whether the edge
+    // before was a boundary edge. Meshes with borders and holes gain
+    // (scans, terrains); closed ones pay a few bytes.
+    bool boundaryFlag = true;
 
-    static Levers none() { return Levers{false, false, false, false, false}; }
+    static Levers none() { return Levers{false, false, false, false, false, false}; }
 };
 
 // The levers' names in parseLevers lists, in Levers' field order:
-// leverName(0) = "filter", 1 "gap", 2 "context", 3 "angle", 4 "front"
-// (nullptr past them).
-constexpr int kLeverCount = 5;
+// leverName(0) = "filter", 1 "gap", 2 "context", 3 "angle", 4 "front",
+// 5 "boundary" (nullptr past them).
+constexpr int kLeverCount = 6;
 const char* leverName(int lever);
 
-// "all", "none", or a comma-separated list of filter, gap, context, angle, front.
+// "all", "none", or a comma-separated list of filter, gap, context, angle, front, boundary.
 // Throws Error on anything else.
 Levers parseLevers(const std::string& list);
 // The inverse: "all", "none" or the list of those on.
