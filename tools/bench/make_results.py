@@ -37,10 +37,14 @@ LEVER_SETS = [
     ("gap", "gap"),
     ("context", "context"),
     ("angle", "angle"),
-    ("all but filter", "gap,context,angle"),
-    ("all but gap", "filter,context,angle"),
-    ("all but context", "filter,gap,angle"),
-    ("all but angle", "filter,gap,context"),
+    ("front", "front"),
+    ("boundary", "boundary"),
+    ("all but filter", "gap,context,angle,front,boundary"),
+    ("all but gap", "filter,context,angle,front,boundary"),
+    ("all but context", "filter,gap,angle,front,boundary"),
+    ("all but angle", "filter,gap,context,front,boundary"),
+    ("all but front", "filter,gap,context,angle,boundary"),
+    ("all but boundary", "filter,gap,context,angle,front"),
     ("all", "all"),
 ]
 
@@ -298,7 +302,11 @@ def main():
       "of the two nearest candidate distances (six buckets from 4096 faces, three below) and, with gap "
       "closing, whether the gap vertex is also the nearest; **angle**, the four nearest candidates "
       "ordered by the angle they subtend over the edge (those behind the edge last), used or not per "
-      "edge by which order won the recent disagreements, with disagreement as a context. Contexts are "
+      "edge by which order won the recent disagreements, with disagreement as a context; **front** "
+      "(format 5), the edge's front neighbours ranked right after rank 1 while the recent apexes say that "
+      "order is cheaper; **boundary** (format 10), whether the edge is a boundary edge coded as a flag of "
+      "its own, in contexts of whether the size step found a vertex ahead and how many of the edge's fans "
+      "end on a coded boundary (of the paper's models only bunny and nefertiti have borders). Contexts are "
       "seeded from a context-free parent table. Below 20000 faces the default also tries `none` and "
       "keeps the smaller file (only the tiniest regular meshes, such as the 288-vertex torus, choose it).")
     w("")
