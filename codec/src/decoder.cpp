@@ -107,7 +107,7 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
     Traversal traversal(d.traversalVertices, expectedFaces, candidates.get());
     EdgeModel model(result.quantized, header.grid.bits - d.vertices.lowBits, header.predictor, header.curvature,
                     header.levers, faceCount, *candidates, traversal, d.parts.formatVersion);
-    RankDecoder coder(d.parts.connectivity, d.parts.connectivitySize, model.contextCount(), header.levers.boundaryFlag);
+    RankDecoder coder(d.parts.connectivity, d.parts.connectivitySize, model.contextCount(), model.boundaryFlags());
     std::vector<uint64_t>& histogram = result.stats.rankHistogram;
 
     const bool startsInStream = d.parts.formatVersion >= kFirstFormatWithStartsInConnectivity;

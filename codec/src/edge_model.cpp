@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "file_format.h"
 #include "gap_closing.h"
 #include "quantize.h"
 #include "rank_coder.h"
@@ -93,7 +94,7 @@ double cosineSubtended(Vec3 a, Vec3 b, Vec3 v) {
 // nothing ahead), and how many of the fans at the edge's ends already end
 // on a coded boundary (0, 1 or 2: a border is coded edge after edge). On
 // mountain, a terrain with one border, 634 of the 636 boundary edges have
-// no vertex ahead, against 23 of its 50,500 other edges.
+// no vertex ahead, against 23 of its 50,561 other edges.
 int boundaryClass(int firstAheadAttempt, const FanEnds& ends) {
     const int ahead = firstAheadAttempt == 0 ? 0 : firstAheadAttempt > 0 ? 1 : 2;
     return 3 * ahead + int(ends.boundaryAtI) + int(ends.boundaryAtJ);
@@ -112,7 +113,8 @@ EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predi
       admissible_(traversal, levers.topologicalFilter),
       predictor_(predictor, curvature, grid, candidates, admissible_),
       ranks_(grid, candidates, admissible_),
-      frontLever_(formatVersion >= 5 && levers.frontNeighbours) {}
+      frontLever_(formatVersion >= 5 && levers.frontNeighbours),
+      boundaryLever_(formatVersion >= kFirstFormatWithBoundaryFlag && levers.boundaryFlag) {}
 
 int EdgeModel::contextCount() const {
     if (!levers_.confidenceContext) return 1;
@@ -123,8 +125,8 @@ const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
     EdgeForecast& f = forecast_;
     f.prediction = snapPrediction(predictor_.predict(edge), bits_);
     FanEnds ends;
-    if (levers_.gapClosing || frontLever_ || levers_.boundaryFlag) ends = fanEnds(edge, admissible_.traversal());
-    f.boundaryClass = levers_.boundaryFlag ? boundaryClass(predictor_.firstAheadAttempt(), ends) : -1;
+    if (levers_.gapClosing || frontLever_ || boundaryLever_) ends = fanEnds(edge, admissible_.traversal());
+    f.boundaryClass = boundaryLever_ ? boundaryClass(predictor_.firstAheadAttempt(), ends) : -1;
     f.preferred = levers_.gapClosing ? gapClosingVertex(edge, ends, grid_, admissible_) : kNoVertex;
     f.context = 0;
     f.nearest.clear();

@@ -37,6 +37,9 @@ public:
 
     // How many coder contexts forecasts use (for the rank coder).
     int contextCount() const;
+    // Whether forecasts carry a boundary class, so that the rank coder
+    // codes a boundary flag before each rank (format 10 with the lever).
+    bool boundaryFlags() const { return boundaryLever_; }
 
     const EdgeForecast& forecast(const OpenEdge& edge);
     // Both use the forecast made last, for the same edge.
@@ -92,6 +95,8 @@ private:
 
     // Format 5, front neighbours (docs/format.md, "Format 5").
     bool frontLever_;
+    // Format 10, boundary flags (docs/format.md, "Format 10").
+    bool boundaryLever_;
     // The forecast's list (nearest) holds the order used: the plain one,
     // or the front order (its first, extra_, the rest); otherOrder_ then
     // holds the plain one.

@@ -170,7 +170,7 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
     Traversal traversal(numbered.vertexCount, faceCount, candidates.get());
     EdgeModel model(grid, options.bits - numbered.lowBits, predictor, options.curvature, options.levers, faceCount,
                     *candidates, traversal);
-    RankEncoder coder(model.contextCount(), options.levers.boundaryFlag);
+    RankEncoder coder(model.contextCount(), model.boundaryFlags());
 
     FileHeader header;
     header.vertexCount = numbered.order.size();

@@ -48,7 +48,7 @@ drm::EncodeOptions optionsFrom(FuzzedDataProvider& in) {
     o.geometry = in.PickValueInArray({drm::GeometryCoder::SpanningTree, drm::GeometryCoder::Raw, drm::GeometryCoder::Refine});
     if (o.geometry == drm::GeometryCoder::Refine) o.refineBits = in.ConsumeIntegralInRange(0, std::min(3, o.bits - 1));
     o.keepVertexOrder = in.ConsumeBool();
-    o.levers = {in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool()};
+    o.levers = {in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool()};
     o.tryWithoutLevers = in.ConsumeBool();
     return o;
 }

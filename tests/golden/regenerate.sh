@@ -23,4 +23,5 @@ encode nefertiti-refine nefertiti.ply --geometry refine  # refine's coarse tree 
 encode tray-bottom tray-bottom.ply                       # CAD STL slivers: the front order (format 5) ranks many edges
 encode bunny-lres bunny-lres.ply                         # a scan: edges from the parent in the frame along the walk, their tangent signs (format 7)
 encode shark-refine mech-holes-shark.ply --geometry refine --refine-bits 2  # refine's coarse tree with format 7's frame
+encode blobby-boundary blobby-3cc.ply --levers boundary  # holes, the boundary flags alone (format 10): the fans walked for them only
 ls -l "$here"/*.drm

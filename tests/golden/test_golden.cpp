@@ -45,6 +45,8 @@ TEST(Golden, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom")
 TEST(Golden, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres"); }
 // Refine's coarse tree, coded with format 7's frame and signs, then two low bits.
 TEST(Golden, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine"); }
+// Holes, and the boundary flags as the only lever (format 10).
+TEST(Golden, BoundaryFlagsAloneOnBlobby) { expectDecodesToGolden("blobby-boundary"); }
 
 TEST(GoldenFormat1, Torus) { expectDecodesToGolden("torus", "/v1", 1); }
 TEST(GoldenFormat1, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v1", 1); }

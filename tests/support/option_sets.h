@@ -69,6 +69,16 @@ inline std::vector<NamedOptions> optionSets() {
         o.levers = drm::Levers::none();
         o.levers.angleOrder = true;
     });
+    add("front-only", [](drm::EncodeOptions& o) {
+        o.levers = drm::Levers::none();
+        o.levers.frontNeighbours = true;
+    });
+    // The fans are walked for the boundary flags alone (gap closing and
+    // front neighbours walk them too).
+    add("boundary-only", [](drm::EncodeOptions& o) {
+        o.levers = drm::Levers::none();
+        o.levers.boundaryFlag = true;
+    });
     add("keep-order", [](drm::EncodeOptions& o) { o.keepVertexOrder = true; });
     // The refine coder with its low bits fixed, so the file always holds it
     // (left to the encoder, small meshes fall back to the spanning tree).

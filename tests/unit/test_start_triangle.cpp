@@ -204,8 +204,8 @@ std::vector<uint8_t> recodeConnectivity(const std::vector<uint8_t>& file, size_t
     Traversal traversal(n, size_t(header.faceCount), candidates.get());
     EdgeModel model(grid, header.grid.bits, header.predictor, header.curvature, header.levers, header.faceCount,
                     *candidates, traversal, parts.formatVersion);
-    RankDecoder in(parts.connectivity, parts.connectivitySize, model.contextCount(), header.levers.boundaryFlag);
-    RankEncoder out(model.contextCount(), header.levers.boundaryFlag);
+    RankDecoder in(parts.connectivity, parts.connectivitySize, model.contextCount(), model.boundaryFlags());
+    RankEncoder out(model.contextCount(), model.boundaryFlags());
     StartCursor cursor(traversal);
     uint32_t lastStart = 0;
     for (size_t c = 0; c < header.componentCount; ++c) {
