@@ -141,7 +141,8 @@ class RankDecoder {
 public:
     RankDecoder(const uint8_t* data, size_t size, int extraContexts = 1, bool boundaryFlags = false);
     // The next rank. Throws Error if the stream holds a rank that does not
-    // fit in 32 bits (corrupt data); otherwise any input decodes to values.
+    // fit in 32 bits, or with boundary flags a rank 0 after a flag that said
+    // no (corrupt data); otherwise any input decodes to values.
     // boundaryClass as RankEncoder::put takes it.
     uint32_t get(int extraContext = 0, int boundaryClass = 0);
     // The gap putStartGap coded; throws Error if it does not fit in 32 bits.
