@@ -269,7 +269,8 @@ void EdgeModel::learnOrder(uint32_t apex, const OpenEdge& edge) {
 
 const std::vector<RankedVertex>& EdgeModel::nearestCandidates(const FixedPoint& p, size_t count, const OpenEdge& edge) {
     if (ballCandidates_ && predictor_.searchedBall())
-        return ranks_.nearestAmong(p, count, edge, [&](auto offer) { predictor_.forEachInBall(offer); });
+        return ranks_.nearestAmong(p, count, edge,
+                                   [&](auto offer, auto bound) { predictor_.forEachInBall(p, bound, offer); });
     return ranks_.nearest(p, count, edge);
 }
 

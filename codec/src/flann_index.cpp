@@ -20,6 +20,7 @@
 #include "spatial_index.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
@@ -68,10 +69,21 @@ public:
     void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const override;
     void forEachNear(Vec3 q, double radius, PointRunVisitor visit) const override {
         collectNear(q, radius, near_);
+        if (near_.empty()) return;
         nearPoints_.resize(3 * near_.size());
+        int32_t* box = nearBox_;
+        for (int k = 0; k < 3; ++k) {
+            box[k] = INT32_MAX;
+            box[3 + k] = INT32_MIN;
+        }
         for (size_t i = 0; i < near_.size(); ++i)
-            for (size_t k = 0; k < 3; ++k) nearPoints_[3 * i + k] = grid_[3 * size_t(near_[i]) + k];
-        visit(near_.data(), nearPoints_.data(), near_.size());
+            for (size_t k = 0; k < 3; ++k) {
+                const int32_t c = grid_[3 * size_t(near_[i]) + k];
+                nearPoints_[3 * i + k] = c;
+                box[k] = std::min(box[k], c);
+                box[3 + k] = std::max(box[3 + k], c);
+            }
+        visit(near_.data(), nearPoints_.data(), near_.size(), box);
     }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
     void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,
@@ -111,6 +123,7 @@ private:
     mutable std::vector<float> foundDistance_;
     mutable std::vector<RankedVertex> ranked_;
     mutable std::vector<uint32_t> near_;  // forEachNear's run
+    mutable int32_t nearBox_[6];          // and the box around it
     mutable std::vector<int32_t> nearPoints_;
 };
 

@@ -89,56 +89,119 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     const Vec3 offset = rejectFrom(p - mid, e);
     const double height = norm(offset);
     if (height == 0) return p;
-    const Vec3 ahead = offset * (1.0 / height);
-    const double halfSlab = edgeLength * (0.5 + tuning_.slabWidening);
+    const Slab slab{mid, e, offset * (1.0 / height), edgeLength, edgeLength * (0.5 + tuning_.slabWidening)};
 
     double radius = 2.0 * std::max(height, edgeLength);
     searchedBall_ = true;
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
-        // The box of cells around the ball holds a few dozen vertices, and
-        // most of them lie outside the ball, behind the edge or beside the
-        // slab, and which it is is a coin toss to a branch predictor. So
-        // the ball is gathered first without a branch (every vertex is
-        // written to the list, and kept there if inside), from the index's
-        // runs where they lie; then the slab test, also without a branch,
-        // over the whole ball at once.
-        inBallCount_ = 0;
-        const double radius2 = radius * radius;
-        candidates_.forEachNear(mid, radius, [&](const uint32_t* ids, const int32_t* at, size_t count) {
-            if (inBall_.size() < inBallCount_ + count) inBall_.resize(2 * (inBallCount_ + count));
-            BallVertex* out = inBall_.data() + inBallCount_;
-            size_t kept = 0;
-            for (size_t i = 0; i < count; ++i, at += 3) {
-                const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - mid;
-                out[kept] = {ids[i], at};
-                kept += norm2(x) <= radius2;
-            }
-            inBallCount_ += kept;
+        // The index hands over its runs of vertices around the ball (cells
+        // of the grid, each in a box), which are kept: the rank's nearest
+        // candidates come from the same ball (forEachInBall).
+        runs_.clear();
+        ballCentre_ = mid;
+        ballRadius2_ = radius * radius;
+        size_t points = 0;
+        candidates_.forEachNear(mid, radius, [&](const uint32_t* ids, const int32_t* at, size_t count, const int32_t* box) {
+            runs_.push_back({ids, at, box, count});
+            points += count;
         });
-        // The best so far: the smallest height, then the smallest index.
-        // The one branch is taken by a vertex in the slab nearer than the
-        // best so far, seldom once one is found; only then is it asked
-        // whether the vertex is admissible (edge look-ups).
-        double firstHeight = std::numeric_limits<double>::infinity();
-        uint32_t first = kNoIndex;
-        for (size_t i = 0; i < inBallCount_; ++i) {
-            const int32_t* q = inBall_[i].point;
-            const Vec3 x = Vec3{double(q[0]), double(q[1]), double(q[2])} - mid;
-            const uint32_t v = inBall_[i].id;
-            const double h = dot(x, ahead);
-            const double along = dot(x, e) / edgeLength;
-            const bool inSlab = (h > 0) & !(along > halfSlab) & !(along < -halfSlab);
-            if (inSlab & ((h < firstHeight) | ((h == firstHeight) & (v < first))) && usable_(v, edge)) {
-                firstHeight = h;
-                first = v;
-            }
-        }
-        if (first != kNoIndex) {
+        gathered_ = points <= kGatherUpToPoints;
+        inBallCount_ = 0;
+        if (gathered_)
+            for (const Run& run : runs_) gather(run);
+        const FirstAhead found = gathered_ ? firstAheadInBall(slab, edge) : firstAheadByRuns(slab, edge);
+        if (found.vertex != kNoIndex) {
             firstAheadAttempt_ = attempt;
-            return mid + (p - mid) * (firstHeight / height);
+            return mid + (p - mid) * (found.height / height);
         }
     }
     return p;
+}
+
+// A run's vertices in the ball, listed: the box of cells around the ball holds a few
+// dozen vertices, and most of them lie outside the ball, behind the edge or
+// beside the slab, and which it is is a coin toss to a branch predictor. So
+// the ball is gathered first without a branch (every vertex is written to
+// the list, and kept there if inside), then the slab test, also without a
+// branch, over the whole ball at once (firstAheadInBall).
+void ApexPredictor::gather(const Run& run) {
+    if (inBall_.size() < inBallCount_ + run.count) inBall_.resize(2 * (inBallCount_ + run.count));
+    BallVertex* out = inBall_.data() + inBallCount_;
+    size_t kept = 0;
+    const int32_t* at = run.points;
+    for (size_t i = 0; i < run.count; ++i, at += 3) {
+        const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - ballCentre_;
+        out[kept] = {run.ids[i], at};
+        kept += norm2(x) <= ballRadius2_;
+    }
+    inBallCount_ += kept;
+}
+
+// Whether v at grid point q is in the slab ahead, and better than the best
+// so far: the smallest height, then the smallest index. The one branch is
+// taken by a vertex nearer than the best so far, seldom once one is found;
+// only then is it asked whether the vertex is admissible (edge look-ups).
+inline void ApexPredictor::offerAhead(const Slab& slab, uint32_t v, const int32_t* q, bool inBall,
+                                      const OpenEdge& edge, FirstAhead& best) const {
+    const Vec3 x = Vec3{double(q[0]), double(q[1]), double(q[2])} - slab.mid;
+    const double h = dot(x, slab.ahead);
+    const double along = dot(x, slab.e) / slab.edgeLength;
+    const bool inSlab = (h > 0) & !(along > slab.halfWidth) & !(along < -slab.halfWidth);
+    if (inBall & inSlab & ((h < best.height) | ((h == best.height) & (v < best.vertex))) && usable_(v, edge)) {
+        best.height = h;
+        best.vertex = v;
+    }
+}
+
+ApexPredictor::FirstAhead ApexPredictor::firstAheadInBall(const Slab& slab, const OpenEdge& edge) const {
+    FirstAhead best;
+    for (size_t i = 0; i < inBallCount_; ++i) offerAhead(slab, inBall_[i].id, inBall_[i].point, true, edge, best);
+    return best;
+}
+
+// The same vertex from the runs as they are, for balls too full to list
+// (on CAD meshes long edges make balls of thousands of vertices, of which a
+// few cells matter). A run whose box lies behind the edge or beside the
+// slab holds no vertex ahead, nor does one whose box lies above the best
+// height found so far: the lowest box is looked at first, then the others
+// in turn, each passed over if it lies above the best by then (sorting them
+// all cost more than it spared). The bounds are the heights of the box's
+// corners, less a margin far above the rounding of either side
+// (coordinates below 2^26, so errors below 1e-6 units): no vertex that
+// could be first is passed over, and which one is first is decided as in
+// the ball, vertex by vertex.
+ApexPredictor::FirstAhead ApexPredictor::firstAheadByRuns(const Slab& slab, const OpenEdge& edge) const {
+    constexpr double kMargin = 1e-3;
+    const double centre[3] = {slab.mid.x, slab.mid.y, slab.mid.z}, towards[3] = {slab.ahead.x, slab.ahead.y, slab.ahead.z},
+                 along[3] = {slab.e.x / slab.edgeLength, slab.e.y / slab.edgeLength, slab.e.z / slab.edgeLength};
+    byHeight_.clear();
+    size_t lowest = 0;
+    for (uint32_t r = 0; r < runs_.size(); ++r) {
+        const int32_t* box = runs_[r].box;
+        double hLo = 0, hHi = 0, alongLo = 0, alongHi = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double lo = double(box[k]) - centre[k], hi = double(box[3 + k]) - centre[k];
+            hLo += std::min(lo * towards[k], hi * towards[k]);
+            hHi += std::max(lo * towards[k], hi * towards[k]);
+            alongLo += std::min(lo * along[k], hi * along[k]);
+            alongHi += std::max(lo * along[k], hi * along[k]);
+        }
+        if (hHi + kMargin <= 0 || alongLo - kMargin > slab.halfWidth || alongHi + kMargin < -slab.halfWidth) continue;
+        if (byHeight_.empty() || hLo - kMargin < byHeight_[lowest].first) lowest = byHeight_.size();
+        byHeight_.emplace_back(hLo - kMargin, r);
+    }
+    if (!byHeight_.empty()) std::swap(byHeight_[0], byHeight_[lowest]);
+    FirstAhead best;
+    for (const std::pair<double, uint32_t>& low : byHeight_) {
+        if (low.first > best.height) continue;  // the run lies above the best
+        const Run& run = runs_[low.second];
+        const int32_t* q = run.points;
+        for (size_t i = 0; i < run.count; ++i, q += 3) {
+            const Vec3 x = Vec3{double(q[0]), double(q[1]), double(q[2])} - ballCentre_;
+            offerAhead(slab, run.ids[i], q, norm2(x) <= ballRadius2_, edge, best);
+        }
+    }
+    return best;
 }
 
 }  // namespace drm

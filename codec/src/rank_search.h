@@ -49,14 +49,17 @@ public:
     const std::vector<RankedVertex>& nearest(const FixedPoint& p, size_t count, const OpenEdge& edge);
     // The same among the vertices some other search has found (the ball
     // the predictor searched, which holds most answers): calls
-    // forEachCandidate(offer), which calls offer(v, point) for each
-    // (point: v's grid x, y, z).
+    // forEachCandidate(offer, bound), which calls offer(v, point) for each
+    // (point: v's grid x, y, z), and may pass over vertices farther from p
+    // than bound() says the answer needs (a squared fixed-point distance:
+    // none farther can enter it).
     template <class ForEach>
     const std::vector<RankedVertex>& nearestAmong(const FixedPoint& p, size_t count, const OpenEdge& edge,
                                                   ForEach forEachCandidate) {
         ranked_.clear();
         if (count == 0) return ranked_;
         if (count > kFew) {
+            auto bound = [&] { return ranked_.size() == count ? ranked_.back().first : INT64_MAX; };
             forEachCandidate([&](uint32_t v, const int32_t* point) {
                 const RankedVertex c{fixedDistance2(point, p), v};
                 if (ranked_.size() == count && !(c < ranked_.back())) return;
@@ -68,7 +71,7 @@ public:
                 else --at;
                 for (; at > 0 && c < ranked_[at - 1]; --at) ranked_[at] = ranked_[at - 1];
                 ranked_[at] = c;
-            });
+            }, bound);
             return ranked_;
         }
         // The usual case, a few: a fixed list padded with "farther than
@@ -79,6 +82,7 @@ public:
         std::fill(d2s, d2s + kFew, INT64_MAX);
         std::fill(vs, vs + kFew, kNoVertex);
         const size_t last = count - 1;
+        auto bound = [&] { return d2s[last]; };  // INT64_MAX until the list is full
         forEachCandidate([&](uint32_t v, const int32_t* point) {
             const int64_t d2 = fixedDistance2(point, p);
             if (!(d2 < d2s[last] || (d2 == d2s[last] && v < vs[last]))) return;
@@ -92,7 +96,7 @@ public:
             const bool first = (d2 < d2s[0]) | ((d2 == d2s[0]) & (v < vs[0]));
             d2s[0] = first ? d2 : d2s[0];
             vs[0] = first ? v : vs[0];
-        });
+        }, bound);
         for (size_t i = 0; i < count && vs[i] != kNoVertex; ++i) ranked_.push_back({d2s[i], vs[i]});
         return ranked_;
     }

@@ -66,9 +66,13 @@ private:
 // Which vertices a nearest search may return; asked only of vertices that
 // could enter the answer.
 using VertexFilter = CallbackRef<bool(uint32_t)>;
-// A run of `count` present vertices: their indices, and their grid
-// coordinates (x, y, z of ids[i] at points[3 i]).
-using PointRunVisitor = CallbackRef<void(const uint32_t* ids, const int32_t* points, size_t count)>;
+// A run of `count` present vertices: their indices, their grid
+// coordinates (x, y, z of ids[i] at points[3 i]), and a box that holds
+// them all (grid units: lowest x, y, z at box[0..2], highest at box[3..5];
+// it may be larger than their own), so that a caller can pass over a run
+// that cannot hold what it looks for.
+using PointRunVisitor =
+    CallbackRef<void(const uint32_t* ids, const int32_t* points, size_t count, const int32_t* box)>;
 
 class SpatialIndex {
 public:
@@ -86,8 +90,9 @@ public:
     virtual void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const = 0;
     // The same vertices, with their grid coordinates, handed to visit in
     // runs (the grid keeps the coordinates with its cells, so the caller's
-    // test reads them in order, and nothing is copied). The runs stay valid
-    // until the next remove() or forEachNear().
+    // test reads them in order, and nothing is copied), each with a box
+    // around it. The runs and boxes stay valid until the next remove() or
+    // forEachNear().
     virtual void forEachNear(Vec3 q, double radius, PointRunVisitor visit) const = 0;
 
     // The `count` present vertices nearest p that accept takes, exactly:

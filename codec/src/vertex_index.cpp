@@ -137,7 +137,7 @@ VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
             slotOf_[slots_[slot]] = slot;
             cellOfVertex_[slots_[slot]] = uint32_t(c);
             for (int k = 0; k < 3; ++k) {
-                const int32_t at = int32_t(int64_t(grid[3 * size_t(slots_[slot]) + size_t(k)]) - origin_);
+                const int32_t at = grid[3 * size_t(slots_[slot]) + size_t(k)];
                 box[k] = std::min(box[k], at);
                 box[3 + k] = std::max(box[3 + k], at);
             }
@@ -173,7 +173,7 @@ void VertexIndex::remove(uint32_t v) {
 
 void VertexIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const {
     out.clear();
-    forEachNear(q, radius, [&out](const uint32_t* ids, const int32_t*, size_t count) {
+    forEachNear(q, radius, [&out](const uint32_t* ids, const int32_t*, size_t count, const int32_t*) {
         out.insert(out.end(), ids, ids + count);
     });
 }

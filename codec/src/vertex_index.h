@@ -38,10 +38,13 @@ public:
     void remove(uint32_t v);
     size_t presentCount() const { return present_.size(); }
 
-    // Calls visit(ids, points, count) with runs of present vertices (points:
-    // their x, y, z, 3 per vertex) that hold every present vertex whose
-    // distance from q is at most radius (grid units), plus possibly some
-    // farther ones: callers apply their own exact test.
+    // Calls visit(ids, points, count, box) with runs of present vertices
+    // (points: their x, y, z, 3 per vertex; box: the lowest and highest x,
+    // y, z of the vertices their cell was built with, grid units; all valid
+    // until the next remove()) that hold
+    // every present vertex whose distance from q is at most radius (grid
+    // units), plus possibly some farther ones: callers apply their own exact
+    // test.
     template <class Visit>
     void forEachNear(Vec3 q, double radius, Visit visit) const;
     // The same vertices, appended to out (cleared first).
@@ -93,14 +96,14 @@ private:
         const int64_t lo = cell * cellWidth_ * kSubUnits, hi = lo + (cellWidth_ - 1) * kSubUnits;
         return std::max<int64_t>(lo - p, 0) + std::max<int64_t>(p - hi, 0);  // lo <= hi: one at most; no branch
     }
-    // Fixed-point distance from p to [lo, hi] (grid units from the origin)
-    // along one axis (p relative to the origin).
+    // Fixed-point distance from p to [lo, hi] (grid units) along one axis.
     static int64_t boxGap(int64_t p, int32_t lo, int32_t hi) {
         const int64_t l = int64_t(lo) * kSubUnits, h = int64_t(hi) * kSubUnits;
         return std::max<int64_t>(l - p, 0) + std::max<int64_t>(p - h, 0);  // as gap
     }
-    // Calls visit for the cells (x, y, z), z0 <= z <= z1 (or only z0 and z1
-    // when capsOnly), within bound2 of p (relative to the origin).
+    // Calls visit(ids, points, count, box) for the cells (x, y, z), z0 <= z
+    // <= z1 (or only z0 and z1 when capsOnly), within bound2 of p (relative
+    // to the origin); box as cellBoxes_ holds it.
     template <class Visit>
     void forEachCellOfColumn(const FixedPoint& p, int64_t x, int64_t y, int64_t z0, int64_t z1, bool capsOnly,
                              int64_t bound2, Visit& visit) const {
@@ -118,11 +121,12 @@ private:
             const int64_t gz = gap(p.z, z);
             if (xy2 + gz * gz > bound2) continue;
             const int32_t* box = cellBoxes_.data() + 6 * size_t(c);
-            const int64_t bx = boxGap(p.x, box[0], box[3]), by = boxGap(p.y, box[1], box[4]),
-                          bz = boxGap(p.z, box[2], box[5]);
+            const int64_t o = origin_ * kSubUnits;  // the boxes are in grid units, not from the origin
+            const int64_t bx = boxGap(p.x + o, box[0], box[3]), by = boxGap(p.y + o, box[1], box[4]),
+                          bz = boxGap(p.z + o, box[2], box[5]);
             if (bx * bx + by * by + bz * bz <= bound2)
                 visit(slots_.data() + cellStart_[c], slotPoints_.data() + 3 * size_t(cellStart_[c]),
-                      size_t(cellPresent_[c]));
+                      size_t(cellPresent_[c]), box);
         }
     }
 
@@ -154,8 +158,8 @@ private:
     // cellStart_[c] + cellPresent_[c]): present ones first.
     std::vector<uint32_t> cellStart_, cellPresent_;
     // Per cell, the smallest and largest x, y, z of its vertices (grid
-    // units from the origin), from all of them: removals leave it larger
-    // than it need be, never smaller.
+    // units), from all of them: removals leave it larger than it need be,
+    // never smaller.
     std::vector<int32_t> cellBoxes_;
     std::vector<uint32_t> slots_, slotOf_, cellOfVertex_;
     std::vector<int32_t> slotPoints_;  // x, y, z of slots_[i] at 3 i: the cells' vertices are read in order
@@ -188,7 +192,7 @@ void VertexIndex::forEachNear(Vec3 q, double radius, Visit visit) const {
         for (size_t c = 0; c < cellStart_.size(); ++c)
             if (cellPresent_[c] != 0)
                 visit(slots_.data() + cellStart_[c], slotPoints_.data() + 3 * size_t(cellStart_[c]),
-                      size_t(cellPresent_[c]));
+                      size_t(cellPresent_[c]), cellBoxes_.data() + 6 * c);
     };
     // A box of cells around the ball, one unit wider than it so that float
     // rounding of q and radius cannot drop a vertex on its surface.
@@ -232,7 +236,7 @@ void VertexIndex::nearestFew(const FixedPoint& p, size_t count, Distance distanc
         if (out.size() > count) out.pop_back();
         if (out.size() == count) bound = out.back().first;
     };
-    auto visit = [&](const uint32_t* first, const int32_t* points, size_t n) {
+    auto visit = [&](const uint32_t* first, const int32_t* points, size_t n, const int32_t*) {
         for (size_t i = 0; i < n; ++i, points += 3) {
             const int64_t d2 = fixedDistance2(points, p);  // from the coordinates stored in the cell
             if (d2 > bound) continue;

@@ -134,10 +134,10 @@ TEST(RankSearch, NearestAmongOfferedVertices) {
     for (int q = 0; q < 50; ++q) {
         const OpenEdge edge{uint32_t(q), uint32_t(q + 1), 0};
         const FixedPoint fp = snapPrediction(Vec3{at(rng), at(rng), at(rng)}, 12);
-        auto offerAll = [&](auto offer) {
+        auto offerAll = [&](auto offer, auto) {
             for (uint32_t v = 200; v-- > 0;) offer(v, s.grid.data() + 3 * size_t(v));
         };
-        auto offerEven = [&](auto offer) {
+        auto offerEven = [&](auto offer, auto) {
             for (uint32_t v = 0; v < 200; v += 2) offer(v, s.grid.data() + 3 * size_t(v));
         };
         std::vector<RankedVertex> allEven;
@@ -150,10 +150,27 @@ TEST(RankSearch, NearestAmongOfferedVertices) {
             SCOPED_TRACE(count);
             const std::vector<RankedVertex> among = search.nearestAmong(fp, count, edge, offerAll);
             EXPECT_EQ(among, search.nearest(fp, count, edge));
+            // The bound: nearest first, a searcher may stop at the first
+            // vertex farther than it, and the answer is the same. It must
+            // not say less than the answer needs: one that stops as soon as
+            // the bound is reached, not passed, loses ties by index.
+            std::vector<RankedVertex> all;
+            for (uint32_t v = 0; v < 200; ++v) all.emplace_back(search.distance2(fp, v), v);
+            std::sort(all.begin(), all.end());
+            size_t offered = 0;
+            auto offerUntilBound = [&](auto offer, auto bound) {
+                for (const RankedVertex& c : all) {
+                    if (c.first > bound()) return;
+                    ++offered;
+                    offer(c.second, s.grid.data() + 3 * size_t(c.second));
+                }
+            };
+            EXPECT_EQ(search.nearestAmong(fp, count, edge, offerUntilBound), among);
+            EXPECT_LT(offered, all.size()) << "the bound never let the search stop";
             const std::vector<RankedVertex> even(allEven.begin(), allEven.begin() + ptrdiff_t(count));
             EXPECT_EQ(search.nearestAmong(fp, count, edge, offerEven), even);
             // Fewer offered than asked for: all of them, in order.
-            auto offerThree = [&](auto offer) {
+            auto offerThree = [&](auto offer, auto) {
                 for (uint32_t v : {150u, 70u, 110u}) offer(v, s.grid.data() + 3 * size_t(v));
             };
             std::vector<RankedVertex> three;

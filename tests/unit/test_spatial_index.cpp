@@ -236,10 +236,14 @@ TEST_P(BothIndexes, CollectNearHoldsEveryPresentVertexInTheBall) {
             }
             // The same vertices with their coordinates, in runs.
             std::vector<uint32_t> visited;
-            index->forEachNear(c, r, [&](const uint32_t* ids, const int32_t* points, size_t count) {
+            index->forEachNear(c, r, [&](const uint32_t* ids, const int32_t* points, size_t count, const int32_t* box) {
                 for (size_t i = 0; i < count; ++i) {
                     visited.push_back(ids[i]);
-                    for (size_t k = 0; k < 3; ++k) ASSERT_EQ(points[3 * i + k], grid[3 * size_t(ids[i]) + k]);
+                    for (size_t k = 0; k < 3; ++k) {
+                        ASSERT_EQ(points[3 * i + k], grid[3 * size_t(ids[i]) + k]);
+                        ASSERT_LE(box[k], points[3 * i + k]) << "a point below its run's box";
+                        ASSERT_GE(box[3 + k], points[3 * i + k]) << "a point above its run's box";
+                    }
                 }
             });
             ASSERT_EQ(visited.size(), near.size());
