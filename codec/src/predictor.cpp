@@ -100,16 +100,14 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
         runs_.clear();
         ballCentre_ = mid;
         ballRadius2_ = radius * radius;
+        inBallCount_ = 0;
         size_t points = 0;
         candidates_.forEachNear(mid, radius, [&](const uint32_t* ids, const int32_t* at, size_t count, const int32_t* box) {
-            runs_.push_back({ids, at, box, count});
             points += count;
+            if (points <= kListUpToPoints) gather(ids, at, count);
+            else runs_.push_back({ids, at, box, count});
         });
-        gathered_ = points <= kGatherUpToPoints;
-        inBallCount_ = 0;
-        if (gathered_)
-            for (const Run& run : runs_) gather(run);
-        const FirstAhead found = gathered_ ? firstAheadInBall(slab, edge) : firstAheadByRuns(slab, edge);
+        const FirstAhead found = runs_.empty() ? firstAheadInBall(slab, edge) : firstAheadByRuns(slab, edge);
         if (found.vertex != kNoIndex) {
             firstAheadAttempt_ = attempt;
             return mid + (p - mid) * (found.height / height);
@@ -118,20 +116,19 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     return p;
 }
 
-// A run's vertices in the ball, listed: the box of cells around the ball holds a few
+// The ball's vertices, listed: the box of cells around the ball holds a few
 // dozen vertices, and most of them lie outside the ball, behind the edge or
 // beside the slab, and which it is is a coin toss to a branch predictor. So
 // the ball is gathered first without a branch (every vertex is written to
 // the list, and kept there if inside), then the slab test, also without a
 // branch, over the whole ball at once (firstAheadInBall).
-void ApexPredictor::gather(const Run& run) {
-    if (inBall_.size() < inBallCount_ + run.count) inBall_.resize(2 * (inBallCount_ + run.count));
+void ApexPredictor::gather(const uint32_t* ids, const int32_t* at, size_t count) {
+    if (inBall_.size() < inBallCount_ + count) inBall_.resize(2 * (inBallCount_ + count));
     BallVertex* out = inBall_.data() + inBallCount_;
     size_t kept = 0;
-    const int32_t* at = run.points;
-    for (size_t i = 0; i < run.count; ++i, at += 3) {
+    for (size_t i = 0; i < count; ++i, at += 3) {
         const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - ballCentre_;
-        out[kept] = {run.ids[i], at};
+        out[kept] = {ids[i], at};
         kept += norm2(x) <= ballRadius2_;
     }
     inBallCount_ += kept;
@@ -161,7 +158,8 @@ ApexPredictor::FirstAhead ApexPredictor::firstAheadInBall(const Slab& slab, cons
 
 // The same vertex from the runs as they are, for balls too full to list
 // (on CAD meshes long edges make balls of thousands of vertices, of which a
-// few cells matter). A run whose box lies behind the edge or beside the
+// few cells matter): the runs listed before the ball was found too full,
+// then the others. A run whose box lies behind the edge or beside the
 // slab holds no vertex ahead, nor does one whose box lies above the best
 // height found so far: the lowest box is looked at first, then the others
 // in turn, each passed over if it lies above the best by then (sorting them
@@ -171,6 +169,7 @@ ApexPredictor::FirstAhead ApexPredictor::firstAheadInBall(const Slab& slab, cons
 // could be first is passed over, and which one is first is decided as in
 // the ball, vertex by vertex.
 ApexPredictor::FirstAhead ApexPredictor::firstAheadByRuns(const Slab& slab, const OpenEdge& edge) const {
+    FirstAhead best = firstAheadInBall(slab, edge);  // the runs listed before the ball was found too full
     constexpr double kMargin = 1e-3;
     const double centre[3] = {slab.mid.x, slab.mid.y, slab.mid.z}, towards[3] = {slab.ahead.x, slab.ahead.y, slab.ahead.z},
                  along[3] = {slab.e.x / slab.edgeLength, slab.e.y / slab.edgeLength, slab.e.z / slab.edgeLength};
@@ -191,7 +190,6 @@ ApexPredictor::FirstAhead ApexPredictor::firstAheadByRuns(const Slab& slab, cons
         byHeight_.emplace_back(hLo - kMargin, r);
     }
     if (!byHeight_.empty()) std::swap(byHeight_[0], byHeight_[lowest]);
-    FirstAhead best;
     for (const std::pair<double, uint32_t>& low : byHeight_) {
         if (low.first > best.height) continue;  // the run lies above the best
         const Run& run = runs_[low.second];

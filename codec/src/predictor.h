@@ -89,7 +89,7 @@ private:
         double height = std::numeric_limits<double>::infinity();
         uint32_t vertex = kNoIndex;
     };
-    void gather(const Run& run);
+    void gather(const uint32_t* ids, const int32_t* points, size_t count);
     void offerAhead(const Slab& slab, uint32_t v, const int32_t* point, bool inBall, const OpenEdge& edge,
                     FirstAhead& best) const;
     FirstAhead firstAheadInBall(const Slab& slab, const OpenEdge& edge) const;
@@ -104,25 +104,25 @@ private:
     std::vector<uint32_t> nearby_;  // scratch, reused by every query
     bool searchedBall_ = false;
     int firstAheadAttempt_ = -1;
-    // The last search's ball, and the runs that hold every present vertex
-    // in it.
-    std::vector<Run> runs_;
-    Vec3 ballCentre_;
-    double ballRadius2_ = 0;
-    // Balls of up to this many vertices in their runs are listed
-    // (gather); fuller ones are searched run by run, passing over runs
-    // that cannot hold an answer. Decoding, callgrind, limits 0 / 64 / 128
-    // / 256 / none: bunny 816 / 757.0 / 756.4 / 757.1 / 759.6 M
-    // instructions, cycloidal 5.01 / 5.01 / 5.01 / 5.04 / 8.22 G, crank
-    // 6.33 / 6.30 / 6.33 / 6.39 / 10.13 G.
-    static constexpr size_t kGatherUpToPoints = 128;
-    bool gathered_ = false;
+    // The last search's ball: its vertices in the runs the index handed
+    // over first, listed (the first inBallCount_ entries of inBall_; the
+    // rest is room), until the runs held more than kListUpToPoints
+    // vertices; the later runs as they are (runs_), searched run by run,
+    // passing over runs that cannot hold an answer. Most balls are listed
+    // whole (runs_ empty). Decoding, callgrind, limits 32 / 64 / 128 /
+    // 256: bunny 764 / 751.5 / 752.1 / 752.8 M instructions (750 when every
+    // ball was listed), crank 5.36 / 5.40 / 5.49 / 5.64 G (9.96), adis16480
+    // 672 / 677 / 687 / 713 M (1,104).
     struct BallVertex {
         uint32_t id;
         const int32_t* point;
     };
-    std::vector<BallVertex> inBall_;  // when gathered_: the first inBallCount_ entries; the rest is room
+    std::vector<BallVertex> inBall_;
     size_t inBallCount_ = 0;
+    std::vector<Run> runs_;
+    static constexpr size_t kListUpToPoints = 64;
+    Vec3 ballCentre_;
+    double ballRadius2_ = 0;
     // Scratch: runs by how near they may come (a height or a distance).
     mutable std::vector<std::pair<double, uint32_t>> byHeight_;
     mutable std::vector<std::pair<int64_t, uint32_t>> byDistance_;
@@ -130,10 +130,8 @@ private:
 
 template <class Visit, class Bound>
 void ApexPredictor::forEachInBall(const FixedPoint& p, Bound bound, Visit visit) const {
-    if (gathered_) {
-        for (size_t i = 0; i < inBallCount_; ++i) visit(inBall_[i].id, inBall_[i].point);
-        return;
-    }
+    for (size_t i = 0; i < inBallCount_; ++i) visit(inBall_[i].id, inBall_[i].point);
+    if (runs_.empty()) return;
     // Each run's nearest possible point, exactly (the box's gap to p per
     // axis, in fixed point). The nearest run first, since it sets the bound
     // soonest; then the others in turn, each passed over if it lies beyond

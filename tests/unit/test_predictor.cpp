@@ -2,7 +2,13 @@
 // answer is known.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
+#include <random>
+#include <set>
+
 #include "predictor.h"
+#include "rank_search.h"
 #include "traversal.h"
 #include "spatial_index.h"
 
@@ -87,6 +93,102 @@ TEST(Predictor, CurvatureBendsOntoThePlaneOfTheNearbyVertices) {
     // Rotation keeps the distance from the edge.
     const Vec3 base = midpointApex({0, 0, 0}, {4, 0, 0}, {2, 3, 0});
     EXPECT_NEAR(p.y * p.y + p.z * p.z, base.y * base.y, 1e-9);
+}
+
+
+// Long edges among dense points make balls of hundreds of vertices, which
+// the predictor searches run by run, passing over runs that cannot hold the
+// answer. The answers must be those of every vertex looked at: the first
+// vertex ahead (the scaled prediction, exactly) and, for the rank's nearest
+// candidates, every vertex of the ball within the bound asked for. Checked
+// against a search over every present vertex, on grids of several cell
+// sizes and on FLANN's index, with a third of the vertices removed.
+TEST(Predictor, FullBallsGiveWhatASearchOfEveryVertexGives) {
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int32_t> at(0, 160);
+    std::vector<int32_t> grid;
+    for (int v = 0; v < 3000; ++v) grid.insert(grid.end(), {at(rng), at(rng), at(rng) / 8});  // a thick slab of points
+    const uint32_t n = uint32_t(grid.size() / 3);
+    std::vector<bool> removed(n, false);
+    for (uint32_t v = 0; v < n; ++v) removed[v] = rng() % 3 == 0;
+    auto point = [&](uint32_t v) { return Vec3{double(grid[3 * v]), double(grid[3 * v + 1]), double(grid[3 * v + 2])}; };
+    struct Made {
+        const char* name;
+        std::unique_ptr<SpatialIndex> index;
+    };
+    std::vector<Made> indexes;
+    indexes.push_back({"grid", makeGridIndex(grid)});
+    indexes.push_back({"grid, cells of 2", makeGridIndex(grid, 1)});
+    indexes.push_back({"grid, cells of 32", makeGridIndex(grid, 5)});
+    indexes.push_back({"flann", makeFlannIndex(grid)});
+    for (Made& made : indexes) {
+        SCOPED_TRACE(made.name);
+        SpatialIndex& index = *made.index;
+        Traversal traversal(n, 1, &index);
+        for (uint32_t v = 0; v < n; ++v)
+            if (removed[v]) index.remove(v);
+        Admissibility admissible(traversal, false);
+        ApexPredictor predictor(Predictor::Midpoint, false, grid, index, admissible);
+        size_t fullBalls = 0;
+        for (int q = 0; q < 300; ++q) {
+            const OpenEdge edge{uint32_t(rng() % n), uint32_t(rng() % n), uint32_t(rng() % n)};
+            if (edge.vi == edge.vj || edge.vi == edge.opposite || edge.vj == edge.opposite) continue;
+            const Vec3 a = point(edge.vi), b = point(edge.vj), mid = (a + b) * 0.5, e = b - a;
+            const Vec3 p = midpointApex(a, b, point(edge.opposite));
+            const Vec3 offset = rejectFrom(p - mid, e);
+            const double height = norm(offset), edgeLength = norm(e);
+            if (height == 0) continue;
+            // The search of every vertex: the balls in turn, the smallest
+            // height in the slab, then the smallest index.
+            const Vec3 ahead = offset * (1.0 / height);
+            const double halfSlab = edgeLength * (0.5 + PredictorTuning().slabWidening);
+            double radius = 2.0 * std::max(height, edgeLength);
+            Vec3 expected = p;
+            std::vector<uint32_t> ball;
+            for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
+                ball.clear();
+                double best = std::numeric_limits<double>::infinity();
+                uint32_t first = kNoIndex;
+                for (uint32_t v = 0; v < n; ++v) {
+                    if (removed[v]) continue;
+                    const Vec3 x = point(v) - mid;
+                    if (!(norm2(x) <= radius * radius)) continue;
+                    ball.push_back(v);
+                    const double h = dot(x, ahead), along = dot(x, e) / edgeLength;
+                    if (h > 0 && !(along > halfSlab) && !(along < -halfSlab) && admissible(v, edge) &&
+                        (h < best || (h == best && v < first))) {
+                        best = h;
+                        first = v;
+                    }
+                }
+                if (first != kNoIndex) {
+                    expected = mid + (p - mid) * (best / height);
+                    break;
+                }
+            }
+            fullBalls += ball.size() > 64 ? 1 : 0;
+            const Vec3 got = predictor.predict(edge);
+            ASSERT_EQ(got.x, expected.x) << "query " << q;
+            ASSERT_EQ(got.y, expected.y) << "query " << q;
+            ASSERT_EQ(got.z, expected.z) << "query " << q;
+            // Every vertex of the ball within the bound, and only vertices
+            // of the ball.
+            const FixedPoint fp = snapPrediction(got, 12);
+            std::vector<int64_t> byDistance;
+            for (uint32_t v : ball) byDistance.push_back(fixedDistance2(grid, fp, v));
+            std::sort(byDistance.begin(), byDistance.end());
+            const int64_t bound = byDistance.size() > 3 ? byDistance[3] : INT64_MAX;
+            std::set<uint32_t> visited;
+            predictor.forEachInBall(fp, [&] { return bound; }, [&](uint32_t v, const int32_t* xyz) {
+                ASSERT_TRUE(std::binary_search(ball.begin(), ball.end(), v)) << "vertex " << v << " is not in the ball";
+                ASSERT_EQ(xyz[0], grid[3 * v]);
+                visited.insert(v);
+            });
+            for (uint32_t v : ball)
+                if (fixedDistance2(grid, fp, v) <= bound) ASSERT_TRUE(visited.count(v)) << "vertex " << v << " passed over";
+        }
+        EXPECT_GT(fullBalls, 100u) << "too few balls over the listing limit: the run-by-run search went untested";
+    }
 }
 
 }  // namespace
