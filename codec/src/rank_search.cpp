@@ -73,13 +73,14 @@ uint32_t RankSearch::vertexOfRank(const FixedPoint& p, uint32_t rank, const Open
     if (rank > index_.presentCount())
         throw Error(ErrorKind::Corrupt, "rank " + std::to_string(rank + listed.size()) + " is impossible: only " +
                     std::to_string(index_.presentCount()) + " candidate vertices remain");
-    index_.nearest(
-        p, rank, [&](uint32_t v) { return v != preferred && !isListed(v, listed) && admissible_(v, edge); }, ranked_);
-    if (ranked_.size() < rank)
+    RankedVertex found;
+    const size_t admissible = index_.nthNearest(
+        p, rank, [&](uint32_t v) { return v != preferred && !isListed(v, listed) && admissible_(v, edge); }, found);
+    if (admissible < rank)
         throw Error(ErrorKind::Corrupt, "rank " + std::to_string(rank + listed.size()) + " is impossible: only " +
-                    std::to_string(ranked_.size() + listed.size()) + " admissible vertices remain for edge " +
+                    std::to_string(admissible + listed.size()) + " admissible vertices remain for edge " +
                     std::to_string(edge.vi) + "-" + std::to_string(edge.vj));
-    return ranked_[rank - 1].second;
+    return found.second;
 }
 
 // The index finds them exactly (ties ordered by index), whichever it is.

@@ -20,6 +20,13 @@ NeighbourIndex resolveIndex(NeighbourIndex choice, IndexRole role) {
     return role == IndexRole::Traversal ? kTraversalDefault : kNeighbourGraphDefault;
 }
 
+size_t SpatialIndex::nthNearest(const FixedPoint& p, size_t count, VertexFilter accept, RankedVertex& out) const {
+    std::vector<RankedVertex> list;
+    nearest(p, count, accept, list);
+    if (count > 0 && list.size() == count) out = list.back();
+    return list.size();
+}
+
 namespace {
 
 // The grid of cells. Nearest searches walk rings of cells outwards until
@@ -38,6 +45,7 @@ public:
         cells().forEachNear(q, radius, visit);
     }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
+    size_t nthNearest(const FixedPoint& p, size_t count, VertexFilter accept, RankedVertex& out) const override;
     void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,
                        int threads) const override;
 
@@ -59,7 +67,7 @@ private:
     const int cellShift_;
     mutable std::unique_ptr<VertexIndex> cells_;
     mutable std::vector<uint32_t> scratch_;
-    mutable std::vector<RankedVertex> candidates_;
+    mutable std::vector<RankedVertex> candidates_, accepted_;
 };
 
 void GridIndex::nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const {
@@ -152,6 +160,63 @@ void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter acce
         if (candidates_.size() < settleFrom) continue;
         if (settle(index.clearance2(p, ring))) return;
         settleFrom = 2 * candidates_.size();
+    }
+}
+
+// For a far rank: the rings as manyNearest walks them, but nothing is
+// sorted. Of the vertices nearer than the rings' clearance (no other can be
+// settled yet), the nearest are taken a chunk at a time (a selection,
+// std::nth_element: as many as the accepted ones still wanted and a quarter
+// more), and each vertex of the chunk is asked whether it is accepted. Every
+// chunk lies beyond the one before, so once `count` are accepted, the
+// answer is the one among the last chunk's accepted that makes up the
+// count, selected again. A vertex is asked once: a settling that fails has
+// asked every vertex nearer than its clearance, and keeps those accepted.
+// (Sorting the rings for it took most of crank's decoding time.)
+size_t GridIndex::nthNearest(const FixedPoint& p, size_t count, VertexFilter accept, RankedVertex& out) const {
+    if (count <= kFewNearest) return SpatialIndex::nthNearest(p, count, accept, out);
+    candidates_.clear();
+    accepted_.clear();
+    auto collect = [&](const uint32_t* first, size_t n) {
+        for (size_t i = 0; i < n; ++i) candidates_.emplace_back(fixedDistance2(grid_, p, first[i]), first[i]);
+    };
+    auto collectCell = [&](const uint32_t* first, const int32_t*, size_t n, const int32_t*) { collect(first, n); };
+    auto settle = [&](int64_t clear) {  // true once `count` accepted vertices are nearer than clear
+        const auto nearer = std::partition(candidates_.begin(), candidates_.end(),
+                                           [clear](const RankedVertex& c) { return c.first >= clear; });
+        for (auto first = nearer; first != candidates_.end();) {
+            const size_t wanted = count - accepted_.size(), chunk = wanted + wanted / 4 + 16;
+            const auto chunkEnd = size_t(candidates_.end() - first) > chunk ? first + ptrdiff_t(chunk) : candidates_.end();
+            if (chunkEnd != candidates_.end()) std::nth_element(first, chunkEnd, candidates_.end());
+            const size_t before = accepted_.size();
+            for (; first != chunkEnd; ++first)
+                if (accept(first->second)) accepted_.push_back(*first);
+            if (accepted_.size() >= count) {
+                std::nth_element(accepted_.begin() + ptrdiff_t(before), accepted_.begin() + ptrdiff_t(count - 1),
+                                 accepted_.end());
+                out = accepted_[count - 1];
+                return true;
+            }
+        }
+        candidates_.erase(nearer, candidates_.end());
+        return false;
+    };
+    const VertexIndex& index = cells();
+    uint64_t cellsVisited = 0;
+    for (int ring = index.firstRing(p);; ++ring) {
+        cellsVisited += VertexIndex::ringCellCount(ring);
+        if (cellsVisited > index.cellBudget()) {  // far from everything left: look at everything
+            candidates_.clear();
+            accepted_.clear();
+            scratch_.clear();
+            index.collectAll(scratch_);
+            collect(scratch_.data(), scratch_.size());
+            return settle(INT64_MAX) ? count : accepted_.size();
+        }
+        index.forEachCellOfRing(p, ring, INT64_MAX, collectCell);
+        if (index.ringsCoverGrid(p, ring)) return settle(INT64_MAX) ? count : accepted_.size();
+        if (accepted_.size() + candidates_.size() < count) continue;
+        if (settle(index.clearance2(p, ring))) return count;
     }
 }
 

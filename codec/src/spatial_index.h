@@ -100,6 +100,12 @@ public:
     // if fewer exist. out is cleared first.
     virtual void nearest(const FixedPoint& p, size_t count, VertexFilter accept,
                          std::vector<RankedVertex>& out) const = 0;
+    // The last of nearest()'s answer for `count`, in out: what a decoder
+    // asks for a far rank, which needs no list. Returns how many vertices
+    // that answer holds (count, or fewer if fewer exist: out is then
+    // untouched). The grid finds it without ordering the nearer ones; by
+    // default it is taken from nearest().
+    virtual size_t nthNearest(const FixedPoint& p, size_t count, VertexFilter accept, RankedVertex& out) const;
 
     // For every vertex v of the grid, the `count` present vertices other
     // than v nearest it, exactly as nearest() would give them:

@@ -75,6 +75,16 @@ TEST_P(BothIndexes, NearestMatchesBruteForceAsVerticesAreRemoved) {
                     index->nearest(p, count, [&](uint32_t v) { return v != skip && v % 5 != 1; }, found);
                     ASSERT_EQ(found, bruteNearest(grid, removed, p, count, skip)) << "round " << round << " count " << count;
                 }
+                // The far ranks' search: the last of that list alone, also
+                // past every vertex there is (then how many there are).
+                for (size_t count : {size_t(3), size_t(9), size_t(40), size_t(300), n}) {
+                    const std::vector<RankedVertex> brute = bruteNearest(grid, removed, p, count, skip);
+                    RankedVertex last{-1, kNoVertex};
+                    const size_t got = index->nthNearest(p, count, [&](uint32_t v) { return v != skip && v % 5 != 1; }, last);
+                    ASSERT_EQ(got, brute.size()) << "round " << round << " count " << count;
+                    if (got == count) ASSERT_EQ(last, brute.back()) << "round " << round << " count " << count;
+                    else ASSERT_EQ(last.second, kNoVertex) << "an answer where there is none";
+                }
             }
             for (int r = 0; r < 100; ++r) {  // cull some, some twice
                 const uint32_t v = uint32_t(local() % n);
