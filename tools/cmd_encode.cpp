@@ -51,7 +51,7 @@ const char* const kEncodeHelp =
     "                    and the tree alone, keeps the smallest)\n"
     "  --levers L        additions to the paper's method: all (default), none, or\n"
     "                    a list of {levers} (see docs/format.md);\n"
-    "                    by default meshes under 20000 faces also try none\n"
+    "                    by default meshes under 4096 faces also try none\n"
     "  --keep-vertex-order  also store the input's vertex order, so that decoding\n"
     "                    gives vertices back in input order (costs bits)\n"
     "  --attributes L    attributes to keep: all (default), none, or a list of\n"

@@ -95,8 +95,10 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     searchedBall_ = true;
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
         // The index hands over its runs of vertices around the ball (cells
-        // of the grid, each in a box), which are kept: the rank's nearest
-        // candidates come from the same ball (forEachInBall).
+        // of the grid, each in a box): the first are listed (their
+        // vertices in the ball), those past kListUpToPoints vertices kept
+        // as runs. The rank's nearest candidates come from the same ball
+        // (forEachInBall).
         runs_.clear();
         ballCentre_ = mid;
         ballRadius2_ = radius * radius;

@@ -56,10 +56,11 @@ public:
     // Then calls visit(v, point) for present vertices in that ball,
     // admissible or not (point: its grid x, y, z), until the index next
     // changes (a culled vertex removed): every one, unless bound() says
-    // some need not be. The ball's cells are visited nearest p first, and
-    // those whose nearest point lies farther from p than bound() (a
-    // squared fixed-point distance, asked before each cell) are passed
-    // over: a search for the few vertices nearest p stops there.
+    // some need not be. The listed vertices come first (most balls are
+    // listed whole), then the runs kept beyond them: the one nearest p,
+    // then the others in turn, each passed over if its nearest point lies
+    // farther from p than bound() (a squared fixed-point distance, asked
+    // before each run) says the caller needs.
     template <class Visit, class Bound>
     void forEachInBall(const FixedPoint& p, Bound bound, Visit visit) const;
     // Which of the last predict()'s balls held the first vertex ahead (0:

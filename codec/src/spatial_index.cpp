@@ -105,8 +105,9 @@ void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, s
     }
 }
 
-// For long rank lists (a decoder asked for a far rank): everything in the
-// rings, then acceptance in rank order. Ordering is what costs, so it waits
+// For long lists (over kFewNearest; the decoder's far ranks take one vertex
+// from nthNearest instead): everything in the rings, then acceptance in
+// rank order. Ordering is what costs, so it waits
 // until the rings hold `count` vertices at all, and after a failed attempt
 // until they have doubled; and only what the answer needs is sorted: the
 // vertices nearer than the rings' clearance (no other can be settled yet),
@@ -174,7 +175,11 @@ void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter acce
 // asked every vertex nearer than its clearance, and keeps those accepted.
 // (Sorting the rings for it took most of crank's decoding time.)
 size_t GridIndex::nthNearest(const FixedPoint& p, size_t count, VertexFilter accept, RankedVertex& out) const {
-    if (count <= kFewNearest) return SpatialIndex::nthNearest(p, count, accept, out);
+    if (count <= kFewNearest) {  // the list of a few, in the index's own scratch
+        nearest(p, count, accept, candidates_);
+        if (candidates_.size() == count) out = candidates_.back();
+        return candidates_.size();
+    }
     candidates_.clear();
     accepted_.clear();
     auto collect = [&](const uint32_t* first, size_t n) {

@@ -59,10 +59,11 @@ public:
     // budget, scanning every present vertex (collectAll) is cheaper.
     static uint64_t ringCellCount(int ring);
     uint64_t cellBudget() const;
-    // Calls visit(first, points, count) with the present vertices of each
-    // cell of the ring (points: their x, y, z, 3 per vertex, stored with
-    // them so that distances need no look-up elsewhere) that has a point within squared fixed-point distance bound2
-    // of p (cells farther away cannot hold anything nearer).
+    // Calls visit(first, points, count, box) with the present vertices of
+    // each cell of the ring (points: their x, y, z, 3 per vertex, stored
+    // with them so that distances need no look-up elsewhere; box: as
+    // forEachNear gives it) that has a point within squared fixed-point
+    // distance bound2 of p (cells farther away cannot hold anything nearer).
     template <class Visit>
     void forEachCellOfRing(const FixedPoint& p, int ring, int64_t bound2, Visit visit) const;
     int64_t clearance2(const FixedPoint& p, int ring) const;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <random>
 #include <set>
@@ -103,11 +104,9 @@ TEST(Predictor, CurvatureBendsOntoThePlaneOfTheNearbyVertices) {
 // candidates, every vertex of the ball within the bound asked for. Checked
 // against a search over every present vertex, on grids of several cell
 // sizes and on FLANN's index, with a third of the vertices removed.
-TEST(Predictor, FullBallsGiveWhatASearchOfEveryVertexGives) {
+void expectFullBallsAsEveryVertexSays(const std::vector<int32_t>& grid,
+                                      const std::function<OpenEdge(std::mt19937&)>& makeEdge) {
     std::mt19937 rng(11);
-    std::uniform_int_distribution<int32_t> at(0, 160);
-    std::vector<int32_t> grid;
-    for (int v = 0; v < 3000; ++v) grid.insert(grid.end(), {at(rng), at(rng), at(rng) / 8});  // a thick slab of points
     const uint32_t n = uint32_t(grid.size() / 3);
     std::vector<bool> removed(n, false);
     for (uint32_t v = 0; v < n; ++v) removed[v] = rng() % 3 == 0;
@@ -131,7 +130,7 @@ TEST(Predictor, FullBallsGiveWhatASearchOfEveryVertexGives) {
         ApexPredictor predictor(Predictor::Midpoint, false, grid, index, admissible);
         size_t fullBalls = 0;
         for (int q = 0; q < 300; ++q) {
-            const OpenEdge edge{uint32_t(rng() % n), uint32_t(rng() % n), uint32_t(rng() % n)};
+            const OpenEdge edge = makeEdge(rng);
             if (edge.vi == edge.vj || edge.vi == edge.opposite || edge.vj == edge.opposite) continue;
             const Vec3 a = point(edge.vi), b = point(edge.vj), mid = (a + b) * 0.5, e = b - a;
             const Vec3 p = midpointApex(a, b, point(edge.opposite));
@@ -172,23 +171,60 @@ TEST(Predictor, FullBallsGiveWhatASearchOfEveryVertexGives) {
             ASSERT_EQ(got.y, expected.y) << "query " << q;
             ASSERT_EQ(got.z, expected.z) << "query " << q;
             // Every vertex of the ball within the bound, and only vertices
-            // of the ball.
+            // of the ball: bounds at the distances of the nearest few, and
+            // none. (A run is passed over only if its box lies beyond the
+            // bound; at a bound equal to a vertex's distance, that vertex
+            // is often its run's nearest point.)
             const FixedPoint fp = snapPrediction(got, 12);
             std::vector<int64_t> byDistance;
             for (uint32_t v : ball) byDistance.push_back(fixedDistance2(grid, fp, v));
             std::sort(byDistance.begin(), byDistance.end());
-            const int64_t bound = byDistance.size() > 3 ? byDistance[3] : INT64_MAX;
-            std::set<uint32_t> visited;
-            predictor.forEachInBall(fp, [&] { return bound; }, [&](uint32_t v, const int32_t* xyz) {
-                ASSERT_TRUE(std::binary_search(ball.begin(), ball.end(), v)) << "vertex " << v << " is not in the ball";
-                ASSERT_EQ(xyz[0], grid[3 * v]);
-                visited.insert(v);
-            });
-            for (uint32_t v : ball)
-                if (fixedDistance2(grid, fp, v) <= bound) ASSERT_TRUE(visited.count(v)) << "vertex " << v << " passed over";
+            byDistance.resize(std::min<size_t>(byDistance.size(), 8));
+            byDistance.push_back(INT64_MAX);
+            for (const int64_t bound : byDistance) {
+                std::set<uint32_t> visited;
+                predictor.forEachInBall(fp, [&] { return bound; }, [&](uint32_t v, const int32_t* xyz) {
+                    ASSERT_TRUE(std::binary_search(ball.begin(), ball.end(), v)) << "vertex " << v << " is not in the ball";
+                    ASSERT_EQ(xyz[0], grid[3 * v]);
+                    visited.insert(v);
+                });
+                for (uint32_t v : ball)
+                    if (fixedDistance2(grid, fp, v) <= bound)
+                        ASSERT_TRUE(visited.count(v)) << "vertex " << v << " passed over, bound " << bound;
+                if (bound == INT64_MAX) ASSERT_EQ(visited.size(), ball.size());
+            }
         }
         EXPECT_GT(fullBalls, 100u) << "too few balls over the listing limit: the run-by-run search went untested";
     }
+}
+
+// 3,000 points in a thick slab, edges between any two.
+TEST(Predictor, FullBallsGiveWhatASearchOfEveryVertexGives) {
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int32_t> at(0, 160);
+    std::vector<int32_t> grid;
+    for (int v = 0; v < 3000; ++v) grid.insert(grid.end(), {at(rng), at(rng), at(rng) / 8});
+    const uint32_t n = uint32_t(grid.size() / 3);
+    expectFullBallsAsEveryVertexSays(grid, [n](std::mt19937& r) {
+        return OpenEdge{uint32_t(r() % n), uint32_t(r() % n), uint32_t(r() % n)};
+    });
+}
+
+// A lattice, edges along x with the rebuilt triangle on the side of larger
+// y: whole rows of vertices ahead lie at one height, so the first vertex
+// ahead is decided by its index among equals, in whichever run it lies.
+TEST(Predictor, FullBallsBreakTiesOfHeightByIndex) {
+    constexpr int32_t kSide = 41, kLayers = 3;
+    std::vector<int32_t> grid;
+    for (int32_t x = 0; x < kSide; ++x)
+        for (int32_t y = 0; y < kSide; ++y)
+            for (int32_t z = 0; z < kLayers; ++z) grid.insert(grid.end(), {x, y, z});
+    auto at = [](int32_t x, int32_t y, int32_t z) { return uint32_t((x * kSide + y) * kLayers + z); };
+    expectFullBallsAsEveryVertexSays(grid, [&](std::mt19937& r) {
+        const int32_t length = 4 + int32_t(r() % 12), x = int32_t(r() % uint32_t(kSide - length));
+        const int32_t y = 2 + int32_t(r() % uint32_t(kSide - 6)), z = int32_t(r() % kLayers);
+        return OpenEdge{at(x, y, z), at(x + length, y, z), at(x + length / 2 + int32_t(r() % 2), y + 3, z)};
+    });
 }
 
 }  // namespace

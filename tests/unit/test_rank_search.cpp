@@ -150,23 +150,22 @@ TEST(RankSearch, NearestAmongOfferedVertices) {
             SCOPED_TRACE(count);
             const std::vector<RankedVertex> among = search.nearestAmong(fp, count, edge, offerAll);
             EXPECT_EQ(among, search.nearest(fp, count, edge));
-            // The bound: nearest first, a searcher may stop at the first
-            // vertex farther than it, and the answer is the same. It must
-            // not say less than the answer needs: one that stops as soon as
-            // the bound is reached, not passed, loses ties by index.
-            std::vector<RankedVertex> all;
-            for (uint32_t v = 0; v < 200; ++v) all.emplace_back(search.distance2(fp, v), v);
-            std::sort(all.begin(), all.end());
+            // The bound: a searcher may pass over every vertex farther
+            // than it says, and the answer is the same. Offered by
+            // decreasing index, a vertex at the bound's own distance (the
+            // scene has many ties) comes after the equal one listed: one
+            // passed over because the bound is reached, not passed, would
+            // lose the tie that the smaller index wins.
             size_t offered = 0;
-            auto offerUntilBound = [&](auto offer, auto bound) {
-                for (const RankedVertex& c : all) {
-                    if (c.first > bound()) return;
+            auto offerWithinBound = [&](auto offer, auto bound) {
+                for (uint32_t v = 200; v-- > 0;) {
+                    if (search.distance2(fp, v) > bound()) continue;
                     ++offered;
-                    offer(c.second, s.grid.data() + 3 * size_t(c.second));
+                    offer(v, s.grid.data() + 3 * size_t(v));
                 }
             };
-            EXPECT_EQ(search.nearestAmong(fp, count, edge, offerUntilBound), among);
-            EXPECT_LT(offered, all.size()) << "the bound never let the search stop";
+            EXPECT_EQ(search.nearestAmong(fp, count, edge, offerWithinBound), among);
+            EXPECT_LT(offered, size_t(200)) << "the bound never let the search pass a vertex over";
             const std::vector<RankedVertex> even(allEven.begin(), allEven.begin() + ptrdiff_t(count));
             EXPECT_EQ(search.nearestAmong(fp, count, edge, offerEven), even);
             // Fewer offered than asked for: all of them, in order.

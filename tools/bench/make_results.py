@@ -307,7 +307,7 @@ def main():
       "order is cheaper; **boundary** (format 10), whether the edge is a boundary edge coded as a flag of "
       "its own, in contexts of whether the size step found a vertex ahead and how many of the edge's fans "
       "end on a coded boundary (of the paper's models only bunny and nefertiti have borders). Contexts are "
-      "seeded from a context-free parent table. Below 20000 faces the default also tries `none` and "
+      "seeded from a context-free parent table. Below 4096 faces the default also tries `none` and "
       "keeps the smaller file (only the tiniest regular meshes, such as the 288-vertex torus, choose it).")
     w("")
 

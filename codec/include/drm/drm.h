@@ -289,7 +289,7 @@ struct EncodeOptions {
     // quantization) before returning; a mismatch throws Error. Costs about
     // one decode (roughly half the encoding time again).
     bool verify = false;
-    // Below 20000 faces, also encode with no levers and keep the smaller
+    // Below 4096 faces, also encode with no levers and keep the smaller
     // file: on tiny regular meshes (a 288-vertex torus) learning the levers'
     // contexts can cost a byte or two more than it saves.
     bool tryWithoutLevers = true;
@@ -308,9 +308,11 @@ struct EncodeOptions {
     // connectivity (over 262,144 with the vertex section then on one
     // thread); the neighbour graph in two halves, the
     // spanning forest beside the cheapest-first tree, refine's estimates
-    // beside the tree's attempt): 1 keeps everything on the calling thread,
+    // beside the tree's attempt, below 20000 faces every other start
+    // vertex tried): 1 keeps everything on the calling thread,
     // 2 or more allows a second (briefly a third: the two estimates, the
-    // vertex coder's split beside the topology check), 0 (the default) is 2
+    // vertex coder's split beside the topology check, the start vertices
+    // tried beside the vertex section), 0 (the default) is 2
     // where the machine has more than one core, else 1; FLANN's neighbour
     // graph takes this many threads (0: every core). Never changes the file.
     // A program encoding several meshes at once, one per core, passes 1.
