@@ -106,16 +106,10 @@ void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, s
 }
 
 // For long lists (over kFewNearest; the decoder's far ranks take one vertex
-// from nthNearest instead): everything in the rings, then acceptance in
-// rank order. Ordering is what costs, so it waits
-// until the rings hold `count` vertices at all, and after a failed attempt
-// until they have doubled; and only what the answer needs is sorted: the
-// vertices nearer than the rings' clearance (no other can be settled yet),
-// the nearest of them a chunk at a time (a selection, then a sort of the
-// chunk), as many as the accepted ones still wanted and a quarter more.
-// Acceptance is asked in the same order a sort of everything gives. (With
-// the whole rings sorted on each attempt, the sorting took a third of
-// crank's decoding time.)
+// from nthNearest instead, and the codec asks for no longer list):
+// everything in the rings, sorted, then acceptance in rank order. Sorting
+// is what costs, so it waits until the rings hold `count` vertices at all,
+// and after a failed attempt until they have doubled.
 void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter accept,
                             std::vector<RankedVertex>& out) const {
     candidates_.clear();
@@ -124,19 +118,14 @@ void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter acce
     };
     auto collectCell = [&](const uint32_t* first, const int32_t*, size_t n, const int32_t*) { collect(first, n); };
     auto settle = [&](int64_t clear) {  // true once `count` accepted vertices are nearer than clear
+        std::sort(candidates_.begin(), candidates_.end());
         out.clear();
-        auto first = candidates_.begin();
-        const auto last = std::partition(first, candidates_.end(), [clear](const RankedVertex& c) { return c.first < clear; });
-        while (first != last) {
-            const size_t wanted = count - out.size(), chunk = wanted + wanted / 4 + 16;
-            const auto chunkEnd = size_t(last - first) > chunk ? first + ptrdiff_t(chunk) : last;
-            if (chunkEnd != last) std::nth_element(first, chunkEnd, last);
-            std::sort(first, chunkEnd);
-            for (; first != chunkEnd; ++first)
-                if (accept(first->second)) {
-                    out.push_back(*first);
-                    if (out.size() == count) return true;
-                }
+        for (const RankedVertex& c : candidates_) {
+            if (c.first >= clear) return false;
+            if (accept(c.second)) {
+                out.push_back(c);
+                if (out.size() == count) return true;
+            }
         }
         return false;
     };
