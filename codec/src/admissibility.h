@@ -19,6 +19,9 @@ public:
         // out. The edge's own ends can never be its apex either; counting
         // them costs 3-12% (method notes).
         if (v == edge.vi || v == edge.vj || traversal_.isCulled(v)) return false;
+        // Format 11, the first of two parts (connectivity_parts.h): a face
+        // over three vertices from the seam on is the second part's.
+        if (v >= seam_ && edge.vi >= seam_ && edge.vj >= seam_) return false;
         if (!topologicalFilter_) return true;
         // A vertex not yet in the mesh has no edges, and the opposite
         // vertex is in it: nothing below can refuse it (most candidates
@@ -36,10 +39,14 @@ public:
     }
 
     const Traversal& traversal() const { return traversal_; }
+    // The first part of a two-part connectivity: vertices from `first` on
+    // hold the second part's faces among themselves.
+    void setSeam(uint32_t first) { seam_ = first; }
 
 private:
     const Traversal& traversal_;
     bool topologicalFilter_;
+    uint32_t seam_ = 0xFFFFFFFFu;  // no vertex: a whole mesh's traversal
 };
 
 }  // namespace drm

@@ -15,8 +15,11 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "attribute_sections.h"
+#include "concurrency.h"
+#include "connectivity_parts.h"
 #include "decoder.h"
 #include "edge_model.h"
 #include "file_format.h"
@@ -92,29 +95,49 @@ void readRepairsBeforeTraversal(Decoding& d) {
     d.traversalVertices = d.vertexCount + d.copyOf().size();
 }
 
-void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressReporter& progress) {
+// One rank stream replayed into faces: a whole mesh's, or one of the two
+// parts of format 11 (connectivity_parts.h).
+struct RankStream {
+    const uint8_t* data = nullptr;
+    size_t size = 0;
+    const std::vector<int32_t>* grid = nullptr;  // the stream's vertices: x, y, z each
+    size_t faceCount = 0;
+    uint64_t componentCount = 0;
+    const uint32_t* startTriangles = nullptr;  // formats 1 to 7: the header's
+    uint32_t seam = kNoIndex;                  // the first of two parts: where the second's vertices begin
+};
+struct RebuiltFaces {
+    std::vector<uint32_t> triangles;
+    std::vector<uint32_t> faceRank;
+    std::vector<uint64_t> histogram;
+};
+
+// progress: may be null (a part decoded beside another).
+RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOptions& options, ProgressReporter* progress) {
     const FileHeader& header = d.header;
-    Decoded& result = d.result;
-    const size_t faceCount = d.traversalFaces;
+    const std::vector<int32_t>& grid = *s.grid;
+    const size_t faceCount = s.faceCount;
+    const size_t vertexCount = grid.size() / 3;
+    RebuiltFaces out;
     // The face count is only a claim until the ranks deliver the faces; the
     // vertices are already decoded, and a manifold mesh has about two faces
     // a vertex: room for that many is made at once (growing by doubling
     // copied the faces again and again, 2.5 % of decoding igea subdivided),
     // never more, whatever the header claims.
-    const size_t expectedFaces = std::min<size_t>(faceCount, 2 * d.traversalVertices + 16);
-    const std::unique_ptr<SpatialIndex> candidates =
-        makeSpatialIndex(result.quantized, options.index, IndexRole::Traversal);
-    Traversal traversal(d.traversalVertices, expectedFaces, candidates.get());
-    EdgeModel model(result.quantized, header.grid.bits - d.vertices.lowBits, header.predictor, header.curvature,
-                    header.levers, faceCount, *candidates, traversal, d.parts.formatVersion);
-    RankDecoder coder(d.parts.connectivity, d.parts.connectivitySize, model.contextCount(), model.boundaryFlags());
-    std::vector<uint64_t>& histogram = result.stats.rankHistogram;
+    const size_t expectedFaces = std::min<size_t>(faceCount, 2 * vertexCount + 16);
+    const std::unique_ptr<SpatialIndex> candidates = makeSpatialIndex(grid, options.index, IndexRole::Traversal);
+    Traversal traversal(vertexCount, expectedFaces, candidates.get());
+    EdgeModel model(grid, header.grid.bits - d.vertices.lowBits, header.predictor, header.curvature, header.levers,
+                    faceCount, *candidates, traversal, d.parts.formatVersion);
+    if (s.seam != kNoIndex) model.setSeam(s.seam);
+    RankDecoder coder(s.data, s.size, model.contextCount(), model.boundaryFlags());
+    std::vector<uint64_t>& histogram = out.histogram;
 
     const bool startsInStream = d.parts.formatVersion >= kFirstFormatWithStartsInConnectivity;
     StartCursor cursor(traversal);  // formats 8 on; costs nothing until a component starts
-    const uint64_t n = d.traversalVertices;
+    const uint64_t n = vertexCount;
     uint32_t lastStart = 0;
-    for (size_t c = 0; c < header.componentCount; ++c) {
+    for (size_t c = 0; c < s.componentCount; ++c) {
         if (traversal.triangleCount() >= faceCount)
             throw Error(ErrorKind::Corrupt, "corrupt file: more components than the header's " + std::to_string(faceCount) + " faces");
         try {
@@ -135,10 +158,10 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
                 start[2] = vertexAtGap(start[0], third, n);
                 lastStart = start[0];
             } else {
-                std::copy_n(&header.startTriangles[3 * c], 3, start);
+                std::copy_n(&s.startTriangles[3 * c], 3, start);
             }
             traversal.startComponent(start[0], start[1], start[2]);
-            result.faceRank.push_back(0);
+            out.faceRank.push_back(0);
         } catch (const Error& e) {
             throw Error(ErrorKind::Corrupt, "corrupt file: component " + std::to_string(c) + ": " + e.what());
         }
@@ -149,7 +172,7 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
             if (coder.bytesPastEnd() > 0)
                 throw Error(ErrorKind::Corrupt, "corrupt file: the connectivity section ends before the last face");
             if (rank >= histogram.size()) {
-                if (rank > d.traversalVertices) throw Error(ErrorKind::Corrupt, "corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
+                if (rank > vertexCount) throw Error(ErrorKind::Corrupt, "corrupt file: rank " + std::to_string(rank) + " exceeds the vertex count");
                 histogram.resize(size_t(rank) + 1, 0);
             }
             ++histogram[rank];
@@ -164,17 +187,80 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
                 const uint32_t apex = model.vertexOfRank(rank, edge);
                 model.resolved(apex);
                 traversal.attachApex(edge, apex);
-                result.faceRank.push_back(rank);
+                out.faceRank.push_back(rank);
             } catch (const Error& e) {
                 throw Error(ErrorKind::Corrupt, "corrupt file: face " + std::to_string(traversal.triangleCount()) + ": " + e.what());
             }
-            progress.tick(0.05 + 0.9 * double(traversal.triangleCount()) / double(faceCount));
+            if (progress) progress->tick(0.05 + 0.9 * double(traversal.triangleCount()) / double(faceCount));
         }
     }
     if (traversal.triangleCount() != faceCount)
         throw Error(ErrorKind::Corrupt, "corrupt file: decoded " + std::to_string(traversal.triangleCount()) + " faces, the header says " +
                     std::to_string(faceCount));
-    result.mesh.triangles = traversal.takeTriangles();
+    out.triangles = traversal.takeTriangles();
+    return out;
+}
+
+bool secondThreadAllowed(const DecodeOptions& options) {
+    return options.threads >= 2 || (options.threads == 0 && std::thread::hardware_concurrency() > 1);
+}
+
+void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressReporter& progress) {
+    const FileHeader& header = d.header;
+    Decoded& result = d.result;
+    RankStream whole;
+    whole.data = d.parts.connectivity;
+    whole.size = d.parts.connectivitySize;
+    whole.grid = &result.quantized;
+    whole.faceCount = d.traversalFaces;
+    whole.componentCount = header.componentCount;
+    whole.startTriangles = header.startTriangles.data();
+    if (!header.twoParts) {
+        RebuiltFaces faces = decodeRanks(d, whole, options, &progress);
+        result.mesh.triangles = std::move(faces.triangles);
+        result.faceRank = std::move(faces.faceRank);
+        result.stats.rankHistogram = std::move(faces.histogram);
+        return;
+    }
+    // Format 11: part 2 over the vertices from the split on, numbered from
+    // 0, beside part 1 over them all.
+    const ConnectivityParts parts = readConnectivityParts(whole.data, whole.size, d.traversalVertices,
+                                                          header.componentCount, d.traversalFaces);
+    const uint32_t split = parts.split;
+    const std::vector<int32_t> secondGrid(result.quantized.begin() + 3 * size_t(split), result.quantized.end());
+    RankStream first = whole, second = whole;
+    first.data = parts.first;
+    first.size = parts.firstSize;
+    first.faceCount = size_t(parts.firstFaces);
+    first.componentCount = parts.firstComponents;
+    first.seam = split;
+    second.data = parts.second;
+    second.size = parts.secondSize;
+    second.grid = &secondGrid;
+    second.faceCount = d.traversalFaces - size_t(parts.firstFaces);
+    second.componentCount = header.componentCount - parts.firstComponents;
+    RebuiltFaces a, b;
+    if (secondThreadAllowed(options)) {
+        std::future<RebuiltFaces> later = startBeside([&] { return decodeRanks(d, second, options, nullptr); });
+        try {
+            a = decodeRanks(d, first, options, &progress);
+        } catch (...) {
+            later.wait();  // what it refers to lives here
+            throw;
+        }
+        b = later.get();
+    } else {
+        a = decodeRanks(d, first, options, &progress);
+        b = decodeRanks(d, second, options, nullptr);
+    }
+    for (uint32_t& v : b.triangles) v += split;
+    a.triangles.insert(a.triangles.end(), b.triangles.begin(), b.triangles.end());
+    a.faceRank.insert(a.faceRank.end(), b.faceRank.begin(), b.faceRank.end());
+    if (b.histogram.size() > a.histogram.size()) a.histogram.resize(b.histogram.size(), 0);
+    for (size_t r = 0; r < b.histogram.size(); ++r) a.histogram[r] += b.histogram[r];
+    result.mesh.triangles = std::move(a.triangles);
+    result.faceRank = std::move(a.faceRank);
+    result.stats.rankHistogram = std::move(a.histogram);
 }
 
 // The geometry coder's second pass, across the decoded triangles (vertex

@@ -48,6 +48,10 @@ public:
     // Whether v may close edge (the encoder checks its true apex against the
     // rule the decoder will apply).
     bool admissible(uint32_t v, const OpenEdge& edge) const { return admissible_(v, edge); }
+    // Format 11: this model ranks the first of two connectivity parts,
+    // whose second part holds the faces over vertices from `first` on
+    // (connectivity_parts.h). Before the first forecast.
+    void setSeam(uint32_t first) { admissible_.setSeam(first); }
     // Tells the model the apex of the last forecast edge, once known, so it
     // can learn which candidate order serves this mesh. After rankOf or
     // vertexOfRank of that edge (the rank they gave is part of the lesson).

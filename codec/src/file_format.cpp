@@ -44,7 +44,7 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
                      (h.hasRepairs ? kFlagRepairs : 0) | (h.attributeSections > 0 ? kFlagAttributes : 0) |
                      (h.levers.frontNeighbours ? kFlagFrontNeighbours : 0) |
                      (h.levers.boundaryFlag ? kFlagBoundaryFlag : 0) |
-                     (h.mortonNumbering ? 0 : kFlagSectionNumbering)));
+                     (h.mortonNumbering ? 0 : kFlagSectionNumbering) | (h.twoParts ? kFlagTwoParts : 0)));
     out.u8(uint8_t(h.grid.bits));
     out.u8(uint8_t(h.predictor));
     out.u8(uint8_t(h.connectivityCoder));
@@ -62,7 +62,8 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
 FileHeader decodeHeader(ByteReader& in, int version) {
     FileHeader h;
     const uint16_t flags = in.u16("flags");
-    const uint16_t known = version >= kFirstFormatWithBoundaryFlag ? kKnownFlags
+    const uint16_t known = version >= kFirstFormatWithTwoParts       ? kKnownFlags
+                           : version >= kFirstFormatWithBoundaryFlag ? kKnownFlagsBefore11
                            : version >= 9                           ? kKnownFlagsBefore10
                            : version >= 5                           ? kKnownFlagsBefore9
                                                                     : kKnownFlagsBefore5;
@@ -77,6 +78,7 @@ FileHeader decodeHeader(ByteReader& in, int version) {
     h.keepsVertexOrder = (flags & kFlagVertexOrder) != 0;
     h.hasRepairs = (flags & kFlagRepairs) != 0;
     h.mortonNumbering = version >= kFirstFormatWithMortonNumbering && !(flags & kFlagSectionNumbering);
+    h.twoParts = (flags & kFlagTwoParts) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
         throw Error(ErrorKind::Corrupt, "corrupt file: quantization bits " + std::to_string(h.grid.bits) + " out of range " +

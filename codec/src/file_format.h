@@ -18,6 +18,9 @@ constexpr int kFirstFormatWithStartsInConnectivity = 8;
 constexpr int kFirstFormatWithMortonNumbering = 9;
 // From 10 a header flag may set the boundary flag lever.
 constexpr int kFirstFormatWithBoundaryFlag = 10;
+// From 11 a header flag may split the connectivity into two parts
+// (connectivity_parts.h).
+constexpr int kFirstFormatWithTwoParts = 11;
 
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
 constexpr uint16_t kFormatVersion = kFileFormatVersion;  // written; read: drm.h's readable range
@@ -38,10 +41,13 @@ constexpr uint16_t kFlagFrontNeighbours = 256;  // format 5 on
 constexpr uint16_t kFlagSectionNumbering = 512;
 // Format 10 on: the boundary flag lever (Levers::boundaryFlag).
 constexpr uint16_t kFlagBoundaryFlag = 1024;
+// Format 11 on: the connectivity section holds two parts, decodable apart.
+constexpr uint16_t kFlagTwoParts = 2048;
 constexpr uint16_t kKnownFlagsBefore5 = 255;
 constexpr uint16_t kKnownFlagsBefore9 = 511;
 constexpr uint16_t kKnownFlagsBefore10 = 1023;
-constexpr uint16_t kKnownFlags = 2047;
+constexpr uint16_t kKnownFlagsBefore11 = 2047;
+constexpr uint16_t kKnownFlags = 4095;
 constexpr uint64_t kMaxAttributeSections = 32;
 
 struct FileHeader {
@@ -55,6 +61,9 @@ struct FileHeader {
     // grid points (morton_order.h), or else in the vertex section's order
     // (kFlagSectionNumbering; formats 1 to 8 always).
     bool mortonNumbering = true;
+    // Format 11 on: the connectivity section holds two parts
+    // (kFlagTwoParts, connectivity_parts.h).
+    bool twoParts = false;
     Levers levers;
     ConnectivityCoder connectivityCoder = ConnectivityCoder::RankRangeCoder;
     GeometryCoder geometryCoder = GeometryCoder::SpanningTree;

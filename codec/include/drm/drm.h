@@ -77,9 +77,9 @@ constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
-constexpr int kFileFormatVersion = 10;
+constexpr int kFileFormatVersion = 11;
 constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 10;
+constexpr int kNewestReadableFormatVersion = 11;
 
 // The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
 // MeshLab rank filter, README's legend): bucket 0 is a component's start
@@ -317,6 +317,12 @@ struct EncodeOptions {
     // graph takes this many threads (0: every core). Never changes the file.
     // A program encoding several meshes at once, one per core, passes 1.
     int threads = 0;
+    // The connectivity in two parts that decode on two threads at once
+    // (format 11; docs/format.md, "Two parts"): 0 (the default) splits
+    // meshes whose traversal codes 32,768 faces or more in Morton
+    // numbering, 1 never splits, 2 always does where the mesh has two
+    // vertices or more (for tests: a small mesh pays for the seam).
+    int connectivityParts = 0;
     Progress progress;                      // may be empty
 };
 
@@ -438,6 +444,11 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options = EncodeOptions())
 Decoded decode(const uint8_t* data, size_t size, const Progress& progress = Progress());
 struct DecodeOptions {
     NeighbourIndex index = NeighbourIndex::Auto;  // never changes the decoded mesh
+    // Threads for a file whose connectivity comes in two parts (format 11):
+    // 1 decodes them in turn on the calling thread, 2 or more the second
+    // beside the first, 0 (the default) is 2 where the machine has more
+    // than one core. Never changes the decoded mesh.
+    int threads = 0;
     Progress progress;                            // may be empty
 };
 Decoded decode(const uint8_t* data, size_t size, const DecodeOptions& options);
