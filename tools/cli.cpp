@@ -68,7 +68,7 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 const std::vector<std::string>& encodeOptionNames() {
     static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers",
                                                    "--refine-bits", "--attributes", "--normal-bits", "--uv-bits",
-                                                   "--weld", "--index", "--start", "--threads"};
+                                                   "--weld", "--index", "--start", "--threads", "--parts"};
     return names;
 }
 
@@ -77,9 +77,7 @@ const std::vector<std::string>& encodeFlagNames() {
     return names;
 }
 
-namespace {
-
-int wholeNumber(const Arguments& args, const char* name) {
+int wholeNumberOption(const Arguments& args, const char* name) {
     const std::string text = args.value(name);
     errno = 0;
     char* end = nullptr;
@@ -88,8 +86,6 @@ int wholeNumber(const Arguments& args, const char* name) {
         throw UsageError(std::string(name) + " needs a whole number, not '" + text + "'");
     return int(value);
 }
-
-}  // namespace
 
 drm::NeighbourIndex neighbourIndexFrom(const Arguments& args) {
     if (!args.has("--index")) return drm::NeighbourIndex::Auto;
@@ -105,10 +101,10 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
     options.index = neighbourIndexFrom(args);
     options.keepVertexOrder = args.has("--keep-vertex-order");
     options.verify = args.has("--verify");
-    if (args.has("--bits")) options.bits = wholeNumber(args, "--bits");
-    if (args.has("--refine-bits")) options.refineBits = wholeNumber(args, "--refine-bits");
-    if (args.has("--normal-bits")) options.normalBits = wholeNumber(args, "--normal-bits");
-    if (args.has("--uv-bits")) options.uvBits = wholeNumber(args, "--uv-bits");
+    if (args.has("--bits")) options.bits = wholeNumberOption(args, "--bits");
+    if (args.has("--refine-bits")) options.refineBits = wholeNumberOption(args, "--refine-bits");
+    if (args.has("--normal-bits")) options.normalBits = wholeNumberOption(args, "--normal-bits");
+    if (args.has("--uv-bits")) options.uvBits = wholeNumberOption(args, "--uv-bits");
     if (args.has("--weld")) {
         const std::string weld = args.value("--weld");
         if (weld == "auto") options.weld = drm::EncodeOptions::Weld::Auto;
@@ -134,8 +130,15 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
         options.searchStarts = start == "search";
     }
     if (args.has("--threads")) {
-        options.threads = wholeNumber(args, "--threads");
+        options.threads = wholeNumberOption(args, "--threads");
         if (options.threads < 1 || options.threads > 2) throw UsageError("--threads takes 1 or 2");
+    }
+    if (args.has("--parts")) {
+        const std::string parts = args.value("--parts");
+        if (parts == "auto") options.connectivityParts = 0;
+        else if (parts == "1") options.connectivityParts = 1;
+        else if (parts == "2") options.connectivityParts = 2;
+        else throw UsageError("--parts takes auto, 1 or 2, not '" + parts + "'");
     }
     if (args.has("--curvature")) {
         const std::string onOff = args.value("--curvature");

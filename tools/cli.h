@@ -49,6 +49,8 @@ const std::vector<std::string>& encodeFlagNames();
 // --index auto|grid|flann (encode and decode): which spatial index runs the
 // neighbour searches; never changes a file or a decoded mesh.
 drm::NeighbourIndex neighbourIndexFrom(const Arguments& args);
+// A whole-number option's value; throws UsageError naming it otherwise.
+int wholeNumberOption(const Arguments& args, const char* name);
 
 // Notes for what `mesh` carries among the attributes `options` asks for
 // that the encoded file does not hold (no section in stats), e.g. "the

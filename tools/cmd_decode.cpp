@@ -8,6 +8,7 @@
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -15,7 +16,7 @@ namespace drm {
 namespace cli {
 
 const char* const kDecodeHelp =
-    "usage: drm decode IN.drm OUT.ply|OUT.obj [--index auto|grid|flann]\n"
+    "usage: drm decode IN.drm OUT.ply|OUT.obj [--index auto|grid|flann] [--threads N]\n"
     "       drm decode INPUTS... -o DIR [-j N] [--format ply|obj] [--index auto|grid|flann]\n"
     "\n"
     "Decompresses IN.drm into a mesh file, by OUT's extension: binary PLY\n"
@@ -42,7 +43,12 @@ const char* const kDecodeHelp =
     "  -j, --jobs N      files decoded at once with -o (default: the number of cores)\n"
     "  --index I         spatial index for the neighbour searches: auto (default:\n"
     "                    the faster), grid or flann (FLANN's kd-tree); the decoded\n"
-    "                    mesh is the same whichever runs\n";
+    "                    mesh is the same whichever runs\n"
+    "  --threads N       threads for one file: 1, or 2 (the default where the machine\n"
+    "                    has several cores: a file whose connectivity comes in two\n"
+    "                    parts, as drm writes meshes of 32,768 faces and more,\n"
+    "                    decodes them side by side); with -o and more than one job,\n"
+    "                    each file takes one; never changes the decoded mesh\n";
 
 namespace {
 
@@ -53,13 +59,14 @@ struct DecodedFile {
 };
 
 // Reads, decodes and writes one file; throws drm::Error naming the input.
-DecodedFile decodeFile(const std::string& input, const std::string& output, drm::NeighbourIndex index,
+DecodedFile decodeFile(const std::string& input, const std::string& output, drm::NeighbourIndex index, int threads,
                        ProgressBar* bar) {
     const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
     drm::Decoded decoded;
     try {
         drm::DecodeOptions options;
         options.index = index;
+        options.threads = threads;
         if (bar) options.progress = bar->callback();
         decoded = drm::decode(bytes.data(), bytes.size(), options);
     } catch (const drm::Error& e) {
@@ -82,12 +89,18 @@ int runDecode(const std::vector<std::string>& args) {
     std::vector<std::string> valued = batchOptionNames();
     valued.push_back("--format");
     valued.push_back("--index");
+    valued.push_back("--threads");
     const Arguments parsed = parseArguments("decode", args, valued, {});
     const std::string format = parsed.value("--format", "ply");
     if (format != "ply" && format != "obj") throw UsageError("--format takes ply or obj, not '" + format + "'");
     const drm::NeighbourIndex index = neighbourIndexFrom(parsed);
     if (parsed.has("-o") && parsed.has("--output-dir")) throw UsageError("give -o or --output-dir, not both");
     const int jobs = jobsFrom(parsed);
+    int threads = 0;
+    if (parsed.has("--threads")) {
+        threads = wholeNumberOption(parsed, "--threads");
+        if (threads < 1 || threads > 2) throw UsageError("--threads takes 1 or 2");
+    }
     if (parsed.has("-o") || parsed.has("--output-dir")) {
         parsed.expectPositional(1, size_t(-1), "input .drm files or folders");
         const std::string dir = parsed.has("-o") ? parsed.value("-o") : parsed.value("--output-dir");
@@ -95,10 +108,12 @@ int runDecode(const std::vector<std::string>& args) {
         const std::vector<std::string> outputs = outputPaths(inputs, dir, "." + format);
         std::vector<BatchFile> files;
         for (size_t i = 0; i < inputs.size(); ++i) files.push_back({inputs[i], outputs[i], fileBytes(inputs[i])});
-        runBatch({"decoded", "bytes out", true}, files, jobs, [index](const BatchFile& file) {
+        // Several files at once: one thread each, as encoding does.
+        const int perFile = std::min<size_t>(size_t(std::max(1, jobs)), files.size()) > 1 ? 1 : threads;
+        runBatch({"decoded", "bytes out", true}, files, jobs, [index, perFile](const BatchFile& file) {
             FileOutcome outcome;
             try {
-                const DecodedFile decoded = decodeFile(file.input, file.output, index, nullptr);
+                const DecodedFile decoded = decodeFile(file.input, file.output, index, perFile, nullptr);
                 outcome.ok = true;
                 outcome.line = decoded.line;
                 outcome.notes = decoded.notes;
@@ -117,7 +132,7 @@ int runDecode(const std::vector<std::string>& args) {
     ProgressBar bar("decoding " + fileName(input));
     if (!hasExtension(output, ".ply") && !hasExtension(output, ".obj"))
         throw UsageError("the output must be a .ply or .obj file, not '" + output + "'");
-    const DecodedFile decoded = decodeFile(input, output, index, &bar);
+    const DecodedFile decoded = decodeFile(input, output, index, threads, &bar);
     printNotes(decoded.notes);
     std::printf("%s\n", decoded.line.c_str());
     return 0;

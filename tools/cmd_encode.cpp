@@ -16,7 +16,7 @@ namespace cli {
 const char* const kEncodeHelp =
     "usage: drm encode IN OUT.drm [--bits N] [--predictor P] [--curvature on|off] [--geometry G] [--levers L]\n"
     "                  [--keep-vertex-order] [--attributes LIST|all|none] [--normal-bits N] [--uv-bits N]\n"
-    "                  [--weld auto|on|off] [--index auto|grid|flann] [--start search|smallest] [--verify]\n"
+    "                  [--weld auto|on|off] [--index auto|grid|flann] [--start search|smallest] [--parts P] [--verify]\n"
     "       drm encode INPUTS... -o DIR [-j N] [options as above]\n"
     "\n"
     "Compresses the triangle mesh IN (PLY, OBJ, OFF or STL) into OUT.drm.\n"
@@ -73,6 +73,8 @@ const char* const kEncodeHelp =
     "                    numbering and the vertex coder's, and keep the smallest\n"
     "                    file) or smallest (each at its smallest vertex, Morton\n"
     "                    numbering, faster)\n"
+    "  --parts P         the connectivity in two parts that decode side by side:\n"
+    "                    auto (default: meshes of 32,768 faces and more), 1 or 2\n"
     "  --threads N       threads for one mesh: 1, or 2 (the default where the machine\n"
     "                    has several cores: the vertex coder beside the mesh checks\n"
     "                    and the connectivity, refine's estimates beside the tree's\n"

@@ -92,6 +92,7 @@ void printJson(const std::string& path, const drm::Stats& s, bool ranks) {
     field("curvature", boolean(s.curvature));
     field("geometry", jsonString(drm::geometryCoderName(s.geometry)));
     field("vertex_numbering", jsonString(s.mortonNumbering ? "morton" : "geometry"));
+    field("connectivity_parts", std::to_string(s.connectivityParts));
     field("refine_bits", std::to_string(s.refineBits));
     field("levers", "{\"topological_filter\": " + boolean(s.levers.topologicalFilter) +
                         ", \"gap_closing\": " + boolean(s.levers.gapClosing) +
@@ -144,6 +145,7 @@ void printText(const std::string& path, const drm::Stats& s, bool ranks) {
                                                   std::to_string(s.refineBits) + " low bits)"
                                             : std::string(drm::geometryCoderName(s.geometry)));
     row("vertex numbering", s.mortonNumbering ? "Morton order" : "the geometry coder's order");
+    if (s.connectivityParts > 1) row("connectivity parts", std::to_string(s.connectivityParts) + " (decoded side by side)");
     row("levers", leverList(s.levers));
     row("header bytes", std::to_string(s.headerBytes));
     row("connectivity bytes", bytesAndRate(s.connectivityBytes, s.connectivityBitsPerVertex()));

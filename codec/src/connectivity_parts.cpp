@@ -1,5 +1,6 @@
 #include "connectivity_parts.h"
 
+#include <algorithm>
 #include <string>
 
 #include "container.h"
@@ -7,12 +8,18 @@
 
 namespace drm {
 
-std::vector<uint8_t> writeConnectivityParts(uint32_t split, uint64_t firstComponents, uint64_t firstFaces,
-                                            const std::vector<uint8_t>& first, const std::vector<uint8_t>& second) {
+std::vector<uint8_t> writeConnectivityParts(const ConnectivityParts& layout, const std::vector<uint8_t>& first,
+                                            const std::vector<uint8_t>& second) {
     ByteWriter out;
-    out.varint(split);
-    out.varint(firstComponents);
-    out.varint(firstFaces);
+    out.varint(layout.split);
+    out.varint(layout.firstComponents);
+    out.varint(layout.firstFaces);
+    out.varint(layout.keptInSecond.size());
+    int64_t last = -1;
+    for (uint32_t v : layout.keptInSecond) {
+        out.varint(uint64_t(int64_t(v) - last - 1));
+        last = v;
+    }
     out.varint(first.size());
     out.bytes(first);
     out.bytes(second);
@@ -29,6 +36,19 @@ ConnectivityParts readConnectivityParts(const uint8_t* data, size_t size, uint64
     parts.split = uint32_t(split);
     parts.firstComponents = in.count("components of the first connectivity part", components);
     parts.firstFaces = in.count("faces of the first connectivity part", faces);
+    const uint64_t secondVertices = vertices - split;
+    // Each kept vertex takes a byte at least: the count is bounded by
+    // what is left before anything is allocated.
+    const uint64_t kept = in.count("kept vertices of the second connectivity part", std::min<uint64_t>(secondVertices, in.remaining()));
+    parts.keptInSecond.reserve(size_t(kept));
+    uint64_t next = 0;  // the least the next kept vertex may be
+    for (uint64_t k = 0; k < kept; ++k) {
+        const uint64_t v = next + in.count("kept vertex gap", secondVertices - 1 - next);
+        parts.keptInSecond.push_back(uint32_t(v));
+        next = v + 1;
+        if (next == secondVertices && k + 1 < kept)
+            throw Error(ErrorKind::Corrupt, "corrupt file: more kept vertices than the second connectivity part has");
+    }
     const uint64_t firstSize = in.count("length of the first connectivity part", in.remaining());
     parts.first = in.bytes(size_t(firstSize), "first connectivity part");
     parts.firstSize = size_t(firstSize);

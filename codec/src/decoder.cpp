@@ -24,6 +24,7 @@
 #include "edge_model.h"
 #include "file_format.h"
 #include "geometry_coders.h"
+#include "morton.h"
 #include "morton_order.h"
 #include "progress.h"
 #include "quantize.h"
@@ -105,6 +106,7 @@ struct RankStream {
     uint64_t componentCount = 0;
     const uint32_t* startTriangles = nullptr;  // formats 1 to 7: the header's
     uint32_t seam = kNoIndex;                  // the first of two parts: where the second's vertices begin
+    const std::vector<uint32_t>* kept = nullptr;  // the second part: its vertices never culled
 };
 struct RebuiltFaces {
     std::vector<uint32_t> triangles;
@@ -129,7 +131,14 @@ RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOpt
     Traversal traversal(vertexCount, expectedFaces, candidates.get());
     EdgeModel model(grid, header.grid.bits - d.vertices.lowBits, header.predictor, header.curvature, header.levers,
                     faceCount, *candidates, traversal, d.parts.formatVersion);
-    if (s.seam != kNoIndex) model.setSeam(s.seam);
+    if (s.seam != kNoIndex) {
+        model.setSeam(s.seam);
+        for (size_t v = s.seam; v < vertexCount; ++v) traversal.keepVertex(uint32_t(v));
+    }
+    if (s.kept) {
+        for (uint32_t v : *s.kept) traversal.keepVertex(v);
+        model.setFirstPartBelowKey(mortonKeyOf(grid.data()));
+    }
     RankDecoder coder(s.data, s.size, model.contextCount(), model.boundaryFlags());
     std::vector<uint64_t>& histogram = out.histogram;
 
@@ -239,6 +248,7 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
     second.grid = &secondGrid;
     second.faceCount = d.traversalFaces - size_t(parts.firstFaces);
     second.componentCount = header.componentCount - parts.firstComponents;
+    second.kept = &parts.keptInSecond;
     RebuiltFaces a, b;
     if (secondThreadAllowed(options)) {
         std::future<RebuiltFaces> later = startBeside([&] { return decodeRanks(d, second, options, nullptr); });

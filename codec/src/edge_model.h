@@ -51,7 +51,18 @@ public:
     // Format 11: this model ranks the first of two connectivity parts,
     // whose second part holds the faces over vertices from `first` on
     // (connectivity_parts.h). Before the first forecast.
-    void setSeam(uint32_t first) { admissible_.setSeam(first); }
+    void setSeam(uint32_t first) {
+        admissible_.setSeam(first);
+        seam_ = first;
+    }
+    // Format 11: this model ranks the second part, whose vertices are those
+    // of the first part's region from Morton key `key` on: an edge whose
+    // prediction lies below it points at the first part's faces (its
+    // boundary flag then has a class of its own). Before the first forecast.
+    void setFirstPartBelowKey(uint64_t key) {
+        firstPartBelow_ = key;
+        secondPart_ = true;
+    }
     // Tells the model the apex of the last forecast edge, once known, so it
     // can learn which candidate order serves this mesh. After rankOf or
     // vertexOfRank of that edge (the rank they gave is part of the lesson).
@@ -101,6 +112,11 @@ private:
     bool frontLever_;
     // Format 10, boundary flags (docs/format.md, "Format 10").
     bool boundaryLever_;
+    // Format 11's parts: the seam's side, for the boundary flag's class.
+    uint32_t seam_ = kNoVertex;
+    bool secondPart_ = false;
+    uint64_t firstPartBelow_ = 0;
+    bool onSeamSide(const OpenEdge& edge, const FixedPoint& prediction) const;
     // The forecast's list (nearest) holds the order used: the plain one,
     // or the front order (its first, extra_, the rest); otherOrder_ then
     // holds the plain one.

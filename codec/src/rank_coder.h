@@ -27,8 +27,9 @@ namespace drm {
 
 // Ranks 0..kRankDirectSymbols-1 are coded as symbols of their own.
 constexpr uint32_t kRankDirectSymbols = 24;
-// The boundary flag's edge classes (format 10).
-constexpr int kBoundaryClasses = 9;
+// The boundary flag's edge classes (format 10; the last three only in
+// format 11's two connectivity parts, for edges on the seam's side).
+constexpr int kBoundaryClasses = 12;
 
 // The fields of a start triangle (format 8, docs/format.md): the first
 // vertex's distance from the decoder's cursor, then the other two vertices'

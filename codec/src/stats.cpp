@@ -15,6 +15,7 @@ void fillStatsFromHeader(Stats& stats, const FileParts& parts, size_t fileSize) 
     stats.levers = header.levers;
     stats.geometry = header.geometryCoder;
     stats.mortonNumbering = header.mortonNumbering;
+    stats.connectivityParts = header.twoParts ? 2 : 1;
     stats.headerBytes = parts.headerBytes;
     stats.connectivityBytes = parts.connectivitySize;
     stats.geometryBytes = parts.geometrySize;

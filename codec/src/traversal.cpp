@@ -23,10 +23,19 @@ void Traversal::startComponent(uint32_t a, uint32_t b, uint32_t c) {
         if (v >= vertexCount())
             throw Error(ErrorKind::Corrupt, "start triangle refers to vertex " + std::to_string(v) + ", but there are only " +
                         std::to_string(vertexCount()) + " vertices");
-        if (state_[v] != kUntouched)
+        if (state_[v] != kUntouched && (kept_.empty() || !kept_[v]))
             throw Error(ErrorKind::Corrupt, "start triangle uses vertex " + std::to_string(v) + ", which an earlier component already uses");
     }
     if (a == b || b == c || a == c) throw Error(ErrorKind::Corrupt, "start triangle repeats vertex " + std::to_string(a == b ? a : c));
+    // Kept vertices may be shared with earlier components, but an edge
+    // never is.
+    if (!kept_.empty())
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t x = corner[k], y = corner[(k + 1) % 3];
+            if (halfEdges_.contains(x, y) || halfEdges_.contains(y, x))
+                throw Error(ErrorKind::Corrupt, "start triangle reuses the edge " + std::to_string(x) + "-" + std::to_string(y) +
+                            " of an earlier component");
+        }
     componentStart_ = triangleCount();
     // The paper pushes the three edges in order to the back; (a, b) is popped first.
     addHalfEdge(a, b, c);
@@ -110,11 +119,16 @@ void Traversal::insertHalfEdge(uint32_t a, uint32_t b, uint32_t value) {
     halfEdges_.insert(a, b, value);
 }
 
+void Traversal::keepVertex(uint32_t v) {
+    if (kept_.empty()) kept_.assign(state_.size(), 0);
+    kept_[v] = 1;
+}
+
 void Traversal::releaseIfDone(uint32_t v) {
     // In a manifold mesh a touched vertex with no open edge has its whole fan
     // rebuilt (closed, or ending on two coded boundary edges): no later
     // triangle can use it, so it leaves the candidate set (paper, Section 3).
-    if (state_[v] == kActive && openEdges_[v] == 0) {
+    if (state_[v] == kActive && openEdges_[v] == 0 && (kept_.empty() || !kept_[v])) {
         state_[v] = kCulled;
         if (candidates_) candidates_->remove(v);
     }

@@ -32,8 +32,15 @@ public:
     Traversal(size_t vertexCount, size_t expectedFaces, SpatialIndex* candidates);
 
     // Inserts a component's start triangle and queues its three edges.
-    // Throws Error if a vertex is out of range, repeated, or already used.
+    // Throws Error if a vertex is out of range, repeated, or already used
+    // (a kept vertex may be, by an edge it does not share).
     void startComponent(uint32_t a, uint32_t b, uint32_t c);
+
+    // Format 11's parts (connectivity_parts.h): vertices whose faces in a
+    // part may form several fans are never culled there (a vertex is culled
+    // once its open edges run out, which would end it after its first
+    // fan). Before the first component.
+    void keepVertex(uint32_t v);
 
     // Pops edges from the front of the deque until one is open (no triangle
     // and no boundary code on its other side yet). False when none is left.
@@ -92,6 +99,7 @@ private:
     HalfEdgeMap halfEdges_;
     std::vector<uint32_t> openEdges_;  // per vertex: open edges it lies on
     std::vector<uint8_t> state_;
+    std::vector<uint8_t> kept_;        // per vertex, 1 if never culled; empty if none is
     std::deque<uint64_t> queue_;       // packed directed edges (vi, vj)
     std::vector<uint32_t> triangles_;
     size_t componentStart_ = 0;  // triangle count when the current component began

@@ -101,6 +101,25 @@ inline std::vector<NamedOptions> optionSets() {
         o.keepVertexOrder = true;
         o.tryWithoutLevers = true;
     });
+    // Format 11's two connectivity parts, forced on small meshes: the seam
+    // rule, kept vertices, starts on shared ones; with the paper's method,
+    // with refine's second pass over both parts' faces, and at 2 bits
+    // (points on one grid point across the split).
+    add("two-parts", [](drm::EncodeOptions& o) { o.connectivityParts = 2; });
+    add("two-parts-no-levers", [](drm::EncodeOptions& o) {
+        o.connectivityParts = 2;
+        o.levers = drm::Levers::none();
+    });
+    add("two-parts-refine-k2-keep-order", [](drm::EncodeOptions& o) {
+        o.connectivityParts = 2;
+        o.geometry = drm::GeometryCoder::Refine;
+        o.refineBits = 2;
+        o.keepVertexOrder = true;
+    });
+    add("two-parts-bits2", [](drm::EncodeOptions& o) {
+        o.connectivityParts = 2;
+        o.bits = 2;
+    });
     return sets;
 }
 

@@ -346,6 +346,9 @@ struct Stats {
     // points (format 9), or the geometry coder's own order (formats 1 to
     // 8; from 9 the raw coder's, and small meshes' where it codes smaller).
     bool mortonNumbering = false;
+    // Format 11: the connectivity in two parts that decode side by side
+    // (EncodeOptions::connectivityParts), else 1.
+    int connectivityParts = 1;
     uint64_t headerBytes = 0;
     uint64_t connectivityBytes = 0;
     uint64_t geometryBytes = 0;
