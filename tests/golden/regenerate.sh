@@ -2,7 +2,7 @@
 # Rewrites the golden .drm files and the meshes they must decode to. Run this
 # only for an intended format change, and say so in the commit: the golden
 # test exists so that no change of the bitstream passes unnoticed.
-# The files of older format versions (v1/ to v9/) are frozen, never rewritten: the
+# The files of older format versions (v1/ to v10/) are frozen, never rewritten: the
 # golden test checks that the decoder still reads them.
 # Usage: tests/golden/regenerate.sh [path/to/drm]
 set -euo pipefail
@@ -24,4 +24,5 @@ encode tray-bottom tray-bottom.ply                       # CAD STL slivers: the 
 encode bunny-lres bunny-lres.ply                         # a scan: edges from the parent in the frame along the walk, their tangent signs (format 7)
 encode shark-refine mech-holes-shark.ply --geometry refine --refine-bits 2  # refine's coarse tree with format 7's frame
 encode blobby-boundary blobby-3cc.ply --levers boundary  # holes, the boundary flags alone (format 10): the fans walked for them only
+encode bunny-lres-parts bunny-lres.ply --parts 2          # a scan in two connectivity parts (format 11): the seam, its classes, kept vertices
 ls -l "$here"/*.drm

@@ -8,8 +8,9 @@
 // neighbours; v5/: before format 6's sign contexts; v6/: before format 7's
 // frame along the walk and tangent signs; v7/: before format 8's start
 // triangles in the connectivity section; v8/: before format 9's Morton
-// numbering; v9/: before format 10's boundary flags), so the decoder keeps
-// reading what users already have.
+// numbering; v9/: before format 10's boundary flags; v10/: before format
+// 11's connectivity in two parts), so the decoder keeps reading what users
+// already have.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -47,6 +48,20 @@ TEST(Golden, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres"); }
 TEST(Golden, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine"); }
 // Holes, and the boundary flags as the only lever (format 10).
 TEST(Golden, BoundaryFlagsAloneOnBlobby) { expectDecodesToGolden("blobby-boundary"); }
+// The connectivity in two parts (format 11), forced on a small scan.
+TEST(Golden, TwoPartsOnBunnyLres) { expectDecodesToGolden("bunny-lres-parts"); }
+
+// Format 10's files, as its last encoder (ea1d730) wrote them: the
+// connectivity in one part.
+TEST(GoldenFormat10, Torus) { expectDecodesToGolden("torus", "/v10", 10); }
+TEST(GoldenFormat10, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v10", 10); }
+TEST(GoldenFormat10, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v10", 10); }
+TEST(GoldenFormat10, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v10", 10); }
+TEST(GoldenFormat10, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v10", 10); }
+TEST(GoldenFormat10, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v10", 10); }
+TEST(GoldenFormat10, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres", "/v10", 10); }
+TEST(GoldenFormat10, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine", "/v10", 10); }
+TEST(GoldenFormat10, BoundaryFlagsAloneOnBlobby) { expectDecodesToGolden("blobby-boundary", "/v10", 10); }
 
 TEST(GoldenFormat1, Torus) { expectDecodesToGolden("torus", "/v1", 1); }
 TEST(GoldenFormat1, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v1", 1); }
@@ -160,7 +175,7 @@ uint8_t highFlags(const std::string& file) {
 // files and later ones set it.
 TEST(GoldenFormat4, FrontNeighbourFlagIsRefused) {
     expectFlagRefused("/v4/blobby-3cc.drm", 0);
-    for (const char* folder : {"/v5", "/v6", "/v7", "/v8", "/v9", ""})
+    for (const char* folder : {"/v5", "/v6", "/v7", "/v8", "/v9", "/v10", ""})
         EXPECT_EQ(highFlags(std::string(folder) + "/blobby-3cc.drm") & 1, 1) << folder;
 }
 
@@ -179,6 +194,14 @@ TEST(GoldenFormat9, BoundaryFlagIsRefused) {
     expectFlagRefused("/v9/blobby-3cc.drm", 2);
     EXPECT_EQ(highFlags("/blobby-3cc.drm") & 4, 4);
     EXPECT_EQ(highFlags("/nefertiti.drm") & 4, 0);
+}
+
+// Header flag bit 11 (two connectivity parts) exists from format 11 on;
+// small meshes stay in one part unless asked.
+TEST(GoldenFormat10, TwoPartsFlagIsRefused) {
+    expectFlagRefused("/v10/bunny-lres.drm", 3);
+    EXPECT_EQ(highFlags("/bunny-lres-parts.drm") & 8, 8);
+    EXPECT_EQ(highFlags("/bunny-lres.drm") & 8, 0);
 }
 
 }  // namespace
