@@ -163,15 +163,16 @@ void writeAttempt(Attempt& attempt, GeometryCoder coder, std::vector<uint8_t> ge
 }
 
 // The faces one rank stream codes: a whole mesh's, or one of format 11's
-// two parts (connectivity_parts.h), over the stream's own vertices.
+// two parts (connectivity_parts.h). Both parts read the numbered mesh's
+// faces and topology, passing over the other part's faces (copies of them
+// cost igea x4's encoding 50 MiB at its peak); part 2 numbers its vertices
+// from the split on.
 struct RankStreamFaces {
-    const std::vector<int32_t>* grid = nullptr;       // x, y, z of its vertices
-    const std::vector<uint32_t>* triangles = nullptr;  // over its vertices
-    const MeshTopology* topology = nullptr;           // of triangles
-    const std::vector<uint32_t>* numberedFace = nullptr;  // its face -> the numbered mesh's (null: the same)
-    uint32_t seam = kNoIndex;                         // part 1: where part 2's vertices begin (kept from there)
-    const std::vector<uint32_t>* kept = nullptr;      // part 2: its vertices never culled
-    bool secondPart = false;
+    enum class Part { Whole, First, Second } part = Part::Whole;
+    const std::vector<int32_t>* grid = nullptr;  // x, y, z of the stream's vertices
+    uint32_t split = 0;                          // parts: where part 2's vertices begin
+    size_t faceCount = 0;                        // the stream's
+    const std::vector<uint32_t>* kept = nullptr;  // part 2: its vertices never culled
 };
 struct CodedRanks {
     std::vector<uint8_t> bytes;
@@ -180,31 +181,41 @@ struct CodedRanks {
     std::vector<uint32_t> triangles;  // as decoded, over the stream's vertices
 };
 
+// The smallest vertex of numbered face f: below the split, the face is part 1's.
+uint32_t smallestVertex(const std::vector<uint32_t>& t, uint32_t f) {
+    return std::min({t[3 * size_t(f)], t[3 * size_t(f) + 1], t[3 * size_t(f) + 2]});
+}
+
 // Walks the traversal over s's faces with their true apexes and codes each
 // edge's rank (paper, Table 1). Ranks and the rank histogram go into result.
 CodedRanks codeRanks(const RankStreamFaces& s, const PreparedMesh& prepared, const NumberedMesh& numbered,
                      const EncodeOptions& options, const ComponentStarts& starts, Encoded& result,
                      ProgressReporter& progress, double progressFrom, double progressSpan) {
+    using Part = RankStreamFaces::Part;
     CodedRanks out;
-    const MeshTopology& topology = *s.topology;
-    const std::vector<uint32_t>& t = *s.triangles;
+    const MeshTopology& topology = numbered.topology;
+    const std::vector<uint32_t>& t = numbered.triangles;
     const std::vector<int32_t>& grid = *s.grid;
-    const size_t faceCount = t.size() / 3;
+    const size_t faceCount = s.faceCount;
     const size_t traversalVertices = grid.size() / 3;
+    const uint32_t offset = s.part == Part::Second ? s.split : 0;  // numbered index of the stream's vertex 0
+    auto inStream = [&](uint32_t face) {
+        return s.part == Part::Whole || (smallestVertex(t, face) < s.split) == (s.part == Part::First);
+    };
     Stats& stats = result.stats;
     const std::unique_ptr<SpatialIndex> candidates = makeSpatialIndex(grid, options.index, IndexRole::Traversal);
     Traversal traversal(traversalVertices, faceCount, candidates.get());
     EdgeModel model(grid, options.bits - numbered.lowBits, numbered.predictor, options.curvature, options.levers,
                     faceCount, *candidates, traversal);
-    if (s.seam != kNoIndex) {
-        model.setSeam(s.seam);
-        for (size_t v = s.seam; v < traversalVertices; ++v) traversal.keepVertex(uint32_t(v));
+    if (s.part == Part::First) {
+        model.setSeam(s.split);
+        for (size_t v = s.split; v < traversalVertices; ++v) traversal.keepVertex(uint32_t(v));
     }
-    if (s.kept)
+    if (s.part == Part::Second) {
         for (uint32_t v : *s.kept) traversal.keepVertex(v);
-    if (s.secondPart) model.setFirstPartBelowKey(mortonKeyOf(grid.data()));
+        model.setFirstPartBelowKey(mortonKeyOf(grid.data()));
+    }
     RankEncoder coder(model.contextCount(), model.boundaryFlags());
-    auto numberedFaceOf = [&](uint32_t face) { return s.numberedFace ? (*s.numberedFace)[face] : face; };
 
     if (prepared.repaired) out.faceOrder.reserve(faceCount);
     size_t attachedCount = 0;
@@ -215,13 +226,14 @@ CodedRanks codeRanks(const RankStreamFaces& s, const PreparedMesh& prepared, con
         // cost the fewest bits; rotated to begin at v, orientation kept.
         uint32_t f = 0, second = 0, third = 0;
         int fewestBits = 1 << 30;
-        for (uint32_t e = topology.start[v]; e < topology.start[v + 1]; ++e) {
-            if (givenFace != kNoIndex && topology.out[e].face != givenFace) continue;
+        const uint32_t at = v + offset;
+        for (uint32_t e = topology.start[at]; e < topology.start[at + 1]; ++e) {
             const uint32_t face = topology.out[e].face;
-            const uint32_t b = topology.out[e].to;
+            if ((givenFace != kNoIndex && face != givenFace) || !inStream(face)) continue;
+            const uint32_t b = topology.out[e].to - offset;
             // The face's third vertex: its three are distinct, so the xor
             // of all three, less v and b.
-            const uint32_t c = t[3 * size_t(face)] ^ t[3 * size_t(face) + 1] ^ t[3 * size_t(face) + 2] ^ v ^ b;
+            const uint32_t c = (t[3 * size_t(face)] ^ t[3 * size_t(face) + 1] ^ t[3 * size_t(face) + 2] ^ at ^ (b + offset)) - offset;
             const int bits = bitLength(uint64_t(startGap(v, b, traversalVertices)) + 1) +
                              bitLength(uint64_t(startGap(v, c, traversalVertices)) + 1);
             if (bits < fewestBits) {
@@ -238,12 +250,14 @@ CodedRanks codeRanks(const RankStreamFaces& s, const PreparedMesh& prepared, con
         lastStart = v;
         ++out.components;
         ++attachedCount;
-        if (prepared.repaired) out.faceOrder.push_back(numberedFaceOf(f));
+        if (prepared.repaired) out.faceOrder.push_back(f);
         traversal.startComponent(v, second, third);
         OpenEdge edge;
         while (traversal.popOpenEdge(edge)) {
             uint32_t face = 0;
-            const uint32_t apex = topology.apexAcross(edge.vi, edge.vj, &face);
+            uint32_t apex = topology.apexAcross(edge.vi + offset, edge.vj + offset, &face);
+            if (apex != kNoVertex && !inStream(face)) apex = kNoVertex;  // the other part's: the seam
+            if (apex != kNoVertex) apex -= offset;
             uint32_t rank = 0;
             const EdgeForecast& forecast = model.forecast(edge);
             const int context = forecast.context, boundaryClass = forecast.boundaryClass;
@@ -256,9 +270,8 @@ CodedRanks codeRanks(const RankStreamFaces& s, const PreparedMesh& prepared, con
                 rank = model.rankOf(apex, edge);
                 model.resolved(apex);
                 traversal.attachApex(edge, apex);
-                const uint32_t numberedFace = numberedFaceOf(face);
-                if (prepared.repaired) out.faceOrder.push_back(numberedFace);
-                result.faceRank[prepared.inputFace.empty() ? numberedFace : prepared.inputFace[numberedFace]] = rank;
+                if (prepared.repaired) out.faceOrder.push_back(face);
+                result.faceRank[prepared.inputFace.empty() ? face : prepared.inputFace[face]] = rank;
                 ++attachedCount;
             }
             coder.put(rank, context, boundaryClass);
@@ -268,11 +281,14 @@ CodedRanks codeRanks(const RankStreamFaces& s, const PreparedMesh& prepared, con
         }
     };
     auto startsAComponent = [&](uint32_t v) {
-        return topology.start[v] != topology.start[v + 1] && !traversal.isTouched(v);
+        if (traversal.isTouched(v)) return false;
+        for (uint32_t e = topology.start[v + offset]; e < topology.start[v + offset + 1]; ++e)
+            if (inStream(topology.out[e].face)) return true;
+        return false;
     };
     if (starts.order == ComponentStarts::Order::InputFaces) {
-        for (size_t f = 0; f < faceCount; ++f)
-            if (!traversal.isTouched(t[3 * f])) codeComponentFrom(t[3 * f], uint32_t(f));
+        for (size_t f = 0; f < t.size() / 3; ++f)
+            if (inStream(uint32_t(f)) && !traversal.isTouched(t[3 * f] - offset)) codeComponentFrom(t[3 * f] - offset, uint32_t(f));
     } else if (starts.firstVertex != kNoVertex && startsAComponent(starts.firstVertex)) {
         codeComponentFrom(starts.firstVertex, kNoIndex);
     }
@@ -355,41 +371,37 @@ Split splitIndex(const NumberedMesh& numbered, const std::vector<uint32_t>& smal
     return median;
 }
 
-// Format 11's two parts of the numbered mesh's faces (connectivity_parts.h).
+// Format 11's two parts of the numbered mesh's faces (connectivity_parts.h):
+// where they split, part 2's vertices, and those of them never culled.
 struct SplitFaces {
     uint32_t split = 0;
+    size_t firstFaces = 0;
     std::vector<int32_t> secondGrid;
-    std::vector<uint32_t> triangles[2], numberedFace[2];
-    MeshTopology topology[2];
     std::vector<uint32_t> keptInSecond;
 };
 bool splitFaces(const NumberedMesh& numbered, bool whateverItCosts, SplitFaces& parts) {
     const std::vector<uint32_t>& t = numbered.triangles;
     const size_t faces = t.size() / 3, n = numbered.vertexCount;
-    std::vector<uint32_t> smallest(faces);
-    for (size_t f = 0; f < faces; ++f) smallest[f] = std::min({t[3 * f], t[3 * f + 1], t[3 * f + 2]});
-    const Split at = splitIndex(numbered, smallest);
-    if (!whateverItCosts && double(at.seamEdges) > kLongestSeamPerFace * double(faces)) return false;
-    parts.split = at.at;
-    const uint32_t m = parts.split;
-    for (size_t f = 0; f < faces; ++f) {
-        const int part = smallest[f] < m ? 0 : 1;
-        const uint32_t shift = part == 0 ? 0 : m;
-        for (int k = 0; k < 3; ++k) parts.triangles[part].push_back(t[3 * f + k] - shift);
-        parts.numberedFace[part].push_back(uint32_t(f));
+    Split at;
+    {
+        std::vector<uint32_t> smallest(faces);
+        for (size_t f = 0; f < faces; ++f) smallest[f] = smallestVertex(t, uint32_t(f));
+        at = splitIndex(numbered, smallest);
+        if (!whateverItCosts && double(at.seamEdges) > kLongestSeamPerFace * double(faces)) return false;
+        for (uint32_t v : smallest) parts.firstFaces += v < at.at ? 1 : 0;
     }
+    const uint32_t m = parts.split = at.at;
     parts.secondGrid.assign(numbered.decodedGrid.begin() + 3 * size_t(m), numbered.decodedGrid.end());
-    buildTopology(parts.triangles[0], n, &parts.topology[0]);
-    buildTopology(parts.triangles[1], n - m, &parts.topology[1]);
-    // Part 2's vertices with two fans or more: as many directed edges out
-    // of them without a twin in part 2 (each fan that is not closed ends on
-    // one).
-    const MeshTopology& second = parts.topology[1];
-    for (size_t v = 0; v + m < n; ++v) {
+    // Part 2's vertices with two fans or more: as many of their part 2
+    // edges out without a part 2 face on the other side (each fan that is
+    // not closed ends on one).
+    const MeshTopology& topology = numbered.topology;
+    auto inSecond = [&](uint32_t face) { return face != kNoIndex && smallestVertex(t, face) >= m; };
+    for (size_t v = m; v < n; ++v) {
         int open = 0;
-        for (uint32_t e = second.start[v]; e < second.start[v + 1]; ++e)
-            open += second.faceOf(second.out[e].to, uint32_t(v)) == kNoIndex ? 1 : 0;
-        if (open >= 2) parts.keptInSecond.push_back(uint32_t(v));
+        for (uint32_t e = topology.start[v]; e < topology.start[v + 1]; ++e)
+            if (inSecond(topology.out[e].face) && !inSecond(topology.faceOf(topology.out[e].to, uint32_t(v)))) ++open;
+        if (open >= 2) parts.keptInSecond.push_back(uint32_t(v - m));
     }
     return true;
 }
@@ -429,27 +441,25 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
     if (!maySplitConnectivity(numbered, options) || !splitFaces(numbered, options.connectivityParts == 2, split)) {
         RankStreamFaces whole;
         whole.grid = &numbered.decodedGrid;
-        whole.triangles = &numbered.triangles;
-        whole.topology = &numbered.topology;
+        whole.faceCount = faceCount;
         CodedRanks coded = codeRanks(whole, prepared, numbered, options, starts, result, progress, 0.05, 0.9);
         header.componentCount = coded.components;
         connectivity = std::move(coded.bytes);
         decodedFaceOrder = std::move(coded.faceOrder);
         decodedTriangles = std::move(coded.triangles);
     } else {
+        using Part = RankStreamFaces::Part;
         RankStreamFaces first, second;
+        first.part = Part::First;
         first.grid = &numbered.decodedGrid;
-        first.triangles = &split.triangles[0];
-        first.topology = &split.topology[0];
-        first.numberedFace = &split.numberedFace[0];
-        first.seam = split.split;
+        first.split = split.split;
+        first.faceCount = split.firstFaces;
+        second.part = Part::Second;
         second.grid = &split.secondGrid;
-        second.triangles = &split.triangles[1];
-        second.topology = &split.topology[1];
-        second.numberedFace = &split.numberedFace[1];
+        second.split = split.split;
+        second.faceCount = faceCount - split.firstFaces;
         second.kept = &split.keptInSecond;
-        second.secondPart = true;
-        const double share = faceCount ? double(split.triangles[0].size() / 3) / double(faceCount) : 0.5;
+        const double share = double(split.firstFaces) / double(faceCount);
         const ComponentStarts smallest;
         CodedRanks a = codeRanks(first, prepared, numbered, options, smallest, result, progress, 0.05, 0.9 * share);
         CodedRanks b = codeRanks(second, prepared, numbered, options, smallest, result, progress, 0.05 + 0.9 * share,
@@ -457,14 +467,15 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
         ConnectivityParts layout;
         layout.split = split.split;
         layout.firstComponents = a.components;
-        layout.firstFaces = split.triangles[0].size() / 3;
-        layout.keptInSecond = split.keptInSecond;
+        layout.firstFaces = split.firstFaces;
+        layout.keptInSecond = std::move(split.keptInSecond);
         connectivity = writeConnectivityParts(layout, a.bytes, b.bytes);
         header.componentCount = a.components + b.components;
         header.twoParts = true;
         decodedFaceOrder = std::move(a.faceOrder);
         decodedFaceOrder.insert(decodedFaceOrder.end(), b.faceOrder.begin(), b.faceOrder.end());
         decodedTriangles = std::move(a.triangles);
+        decodedTriangles.reserve(3 * faceCount);
         for (uint32_t v : b.triangles) decodedTriangles.push_back(v + split.split);
     }
     progress.stage("writing", 0.95);
