@@ -50,6 +50,7 @@ drm::EncodeOptions optionsFrom(FuzzedDataProvider& in) {
     o.keepVertexOrder = in.ConsumeBool();
     o.levers = {in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool()};
     o.tryWithoutLevers = in.ConsumeBool();
+    o.connectivityParts = in.ConsumeBool() ? 2 : 0;  // format 11's parts, forced on these small meshes
     return o;
 }
 
