@@ -169,6 +169,10 @@ RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOpt
             } else {
                 std::copy_n(&s.startTriangles[3 * c], 3, start);
             }
+            // Every face of part 1 has a vertex below the seam (its ranks
+            // see to it for the others): so no face is in both parts.
+            if (s.seam != kNoIndex && std::min({start[0], start[1], start[2]}) >= s.seam)
+                throw Error(ErrorKind::Corrupt, "its start triangle lies past the first part's vertices");
             traversal.startComponent(start[0], start[1], start[2]);
             out.faceRank.push_back(0);
         } catch (const Error& e) {

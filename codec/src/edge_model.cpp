@@ -89,7 +89,8 @@ double cosineSubtended(Vec3 a, Vec3 b, Vec3 v) {
     return uu == 0 || ww == 0 ? 1.0 : dot(u, w) / std::sqrt(uu * ww);
 }
 
-// Format 10, the boundary flag's context class (0 .. kBoundaryClasses - 1):
+// Format 10, the boundary flag's context class (0 .. 8; format 11 adds the
+// seam's, below):
 // where the size step found the first vertex ahead of the edge (in its
 // first ball, in a wider one, or nowhere: past an open border there is
 // nothing ahead), and how many of the fans at the edge's ends already end

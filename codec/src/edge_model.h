@@ -55,10 +55,11 @@ public:
         admissible_.setSeam(first);
         seam_ = first;
     }
-    // Format 11: this model ranks the second part, whose vertices are those
-    // of the first part's region from Morton key `key` on: an edge whose
-    // prediction lies below it points at the first part's faces (its
-    // boundary flag then has a class of its own). Before the first forecast.
+    // Format 11: this model ranks the second part, whose first vertex has
+    // Morton key `key`: an edge whose prediction lies at a grid point of
+    // smaller key points into the first part's region, across the seam
+    // (its boundary flag then has a class of its own). Before the first
+    // forecast.
     void setFirstPartBelowKey(uint64_t key) {
         firstPartBelow_ = key;
         secondPart_ = true;

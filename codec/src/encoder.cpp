@@ -175,6 +175,7 @@ struct RankStreamFaces {
     const std::vector<uint32_t>* kept = nullptr;  // part 2: its vertices never culled
 };
 struct CodedRanks {
+    bool complete = true;  // a part may leave faces no start reaches (below)
     std::vector<uint8_t> bytes;
     uint64_t components = 0;
     std::vector<uint32_t> faceOrder;  // numbered faces in decoded order (when the mesh was repaired)
@@ -295,9 +296,20 @@ CodedRanks codeRanks(const RankStreamFaces& s, const PreparedMesh& prepared, con
     for (uint32_t v = 0; v < traversalVertices; ++v)
         if (startsAComponent(v)) codeComponentFrom(v, kNoIndex);
 
-    if (attachedCount != faceCount)
+    if (attachedCount != faceCount) {
+        // A part-2 component whose every vertex is kept and was reached
+        // from other components (a triangle bordered by the seam on all
+        // sides, touching the rest at its corners) has no untouched vertex
+        // to start from: the caller codes the mesh in one part instead.
+        // Part 1 cannot: each of its components has a vertex below the
+        // split, whose faces are all part 1's, in one fan.
+        if (s.part == Part::Second) {
+            out.complete = false;
+            return out;
+        }
         throw Error(ErrorKind::Internal, "internal error: the traversal reached " + std::to_string(attachedCount) + " of " +
                     std::to_string(faceCount) + " faces");
+    }
     out.bytes = coder.finish();
     out.triangles = traversal.takeTriangles();
     return out;
@@ -313,14 +325,14 @@ bool maySplitConnectivity(const NumberedMesh& numbered, const EncodeOptions& opt
 }
 // Unless asked for two parts whatever they cost, a mesh whose shortest seam
 // has more edges than this share of its faces stays whole. The split costs
-// a mesh 0.05 to 0.45 % of its file where the seam is shorter (24 corpus
-// meshes: about 100 bytes for the second part's models learning anew, and
+// a mesh 0.06 to 0.44 % of its file where the seam is shorter (21 corpus
+// meshes: about 100 bytes for the second part's tables learning anew, and
 // its edges coded as boundary edges on both sides); the CAD meshes cycloidal
 // (1.8 % of its faces, 2.3 % larger) and octopus (1.0 %, 0.54 %) stay whole.
 constexpr double kLongestSeamPerFace = 0.009;
 
 // Where format 11 splits the numbered vertices: of the indices that leave
-// 40 to 60 % of the faces in the first part, the one with the fewest seam
+// 45 to 55 % of the faces in the first part, the one with the fewest seam
 // edges (each is coded as a boundary edge in both parts), the one nearest
 // the middle of equals. On a mesh of several pieces the seam can then run
 // between them.
@@ -332,6 +344,7 @@ constexpr double kLongestSeamPerFace = 0.009;
 struct Split {
     uint32_t at = 1;
     int64_t seamEdges = 0;
+    bool even = true;  // 45 to 55 % of the faces in part 1
 };
 Split splitIndex(const NumberedMesh& numbered, const std::vector<uint32_t>& smallest) {
     const size_t faces = smallest.size(), n = numbered.vertexCount;
@@ -365,6 +378,7 @@ Split splitIndex(const NumberedMesh& numbered, const std::vector<uint32_t>& smal
     if (best != 0) return {best, bestSeam};
     // No index splits the faces that evenly (a few huge fans): the median.
     Split median;
+    median.even = false;
     seam = 0;
     for (median.at = 1; median.at < n - 1 && 2 * size_t(below[median.at]) < faces; ++median.at) seam += seamChange[median.at];
     median.seamEdges = seam + seamChange[median.at];
@@ -387,7 +401,8 @@ bool splitFaces(const NumberedMesh& numbered, bool whateverItCosts, SplitFaces& 
         std::vector<uint32_t> smallest(faces);
         for (size_t f = 0; f < faces; ++f) smallest[f] = smallestVertex(t, uint32_t(f));
         at = splitIndex(numbered, smallest);
-        if (!whateverItCosts && double(at.seamEdges) > kLongestSeamPerFace * double(faces)) return false;
+        if (!whateverItCosts && (!at.even || double(at.seamEdges) > kLongestSeamPerFace * double(faces)))
+            return false;  // a long seam, or parts too uneven to gain much from a second thread
         for (uint32_t v : smallest) parts.firstFaces += v < at.at ? 1 : 0;
     }
     const uint32_t m = parts.split = at.at;
@@ -438,7 +453,7 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
     std::vector<uint32_t> decodedTriangles;
     std::vector<uint8_t> connectivity;
     SplitFaces split;
-    if (!maySplitConnectivity(numbered, options) || !splitFaces(numbered, options.connectivityParts == 2, split)) {
+    auto codeWhole = [&] {
         RankStreamFaces whole;
         whole.grid = &numbered.decodedGrid;
         whole.faceCount = faceCount;
@@ -447,6 +462,9 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
         connectivity = std::move(coded.bytes);
         decodedFaceOrder = std::move(coded.faceOrder);
         decodedTriangles = std::move(coded.triangles);
+    };
+    if (!maySplitConnectivity(numbered, options) || !splitFaces(numbered, options.connectivityParts == 2, split)) {
+        codeWhole();
     } else {
         using Part = RankStreamFaces::Part;
         RankStreamFaces first, second;
@@ -464,19 +482,25 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
         CodedRanks a = codeRanks(first, prepared, numbered, options, smallest, result, progress, 0.05, 0.9 * share);
         CodedRanks b = codeRanks(second, prepared, numbered, options, smallest, result, progress, 0.05 + 0.9 * share,
                                  0.9 * (1 - share));
-        ConnectivityParts layout;
-        layout.split = split.split;
-        layout.firstComponents = a.components;
-        layout.firstFaces = split.firstFaces;
-        layout.keptInSecond = std::move(split.keptInSecond);
-        connectivity = writeConnectivityParts(layout, a.bytes, b.bytes);
-        header.componentCount = a.components + b.components;
-        header.twoParts = true;
-        decodedFaceOrder = std::move(a.faceOrder);
-        decodedFaceOrder.insert(decodedFaceOrder.end(), b.faceOrder.begin(), b.faceOrder.end());
-        decodedTriangles = std::move(a.triangles);
-        decodedTriangles.reserve(3 * faceCount);
-        for (uint32_t v : b.triangles) decodedTriangles.push_back(v + split.split);
+        if (!b.complete) {  // as if never split
+            result.faceRank.assign(prepared.inputFaces, 0);
+            stats.rankHistogram.clear();
+            codeWhole();
+        } else {
+            ConnectivityParts layout;
+            layout.split = split.split;
+            layout.firstComponents = a.components;
+            layout.firstFaces = split.firstFaces;
+            layout.keptInSecond = std::move(split.keptInSecond);
+            connectivity = writeConnectivityParts(layout, a.bytes, b.bytes);
+            header.componentCount = a.components + b.components;
+            header.twoParts = true;
+            decodedFaceOrder = std::move(a.faceOrder);
+            decodedFaceOrder.insert(decodedFaceOrder.end(), b.faceOrder.begin(), b.faceOrder.end());
+            decodedTriangles = std::move(a.triangles);
+            decodedTriangles.reserve(3 * faceCount);
+            for (uint32_t v : b.triangles) decodedTriangles.push_back(v + split.split);
+        }
     }
     progress.stage("writing", 0.95);
     const std::vector<uint8_t> vertexOrder =
@@ -509,8 +533,8 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
         secondPass = geometryCoder.encodeAfterConnectivity(numbered.geometry, numbered.fineDecoded, numbered.lowBits,
                                                            triangles);
     }
-    // The faces as the decoder will give them back (the traversal's own:
-    // it is done, and a copy would cost 12 bytes a face at the peak).
+    // The faces as the decoder will give them back (the traversal's own,
+    // or the two parts' joined; moved, not copied: 12 bytes a face).
     attempt.decodedTriangles = std::move(decodedTriangles);
     if (prepared.repaired) undoCut(attempt.decodedTriangles, inDecodedOrder, size_t(header.vertexCount));
     if (options.keepVertexOrder)
@@ -995,6 +1019,9 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
                     std::to_string(options.bits) + " bits");
     if (options.threads < 0)
         throw Error(ErrorKind::InvalidInput, "threads " + std::to_string(options.threads) + " is negative (0: as the machine allows)");
+    if (options.connectivityParts < 0 || options.connectivityParts > 2)
+        throw Error(ErrorKind::InvalidInput, "connectivity parts " + std::to_string(options.connectivityParts) +
+                    " is not 0 (as the mesh asks), 1 or 2");
     // The first attempt's vertex section needs the quantized grid alone:
     // with a second thread it is coded there while this one checks the
     // mesh's topology and cuts it (igea: 4 % of the encoding).

@@ -85,6 +85,8 @@ Decoded decode(const uint8_t* data, size_t size, const Progress& progress) {
 }
 
 Decoded decode(const uint8_t* data, size_t size, const DecodeOptions& options) {
+    if (options.threads < 0)
+        throw Error(ErrorKind::InvalidInput, "threads " + std::to_string(options.threads) + " is negative (0: as the machine allows)");
     FileParts parts;
     return decodeCore(data, size, options, &parts);
 }

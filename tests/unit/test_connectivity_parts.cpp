@@ -77,6 +77,25 @@ TEST(ConnectivityParts, LargeMeshesAreSplitByDefault) {
     EXPECT_EQ(inspect(split.bytes).stats.connectivityParts, 2);
 }
 
+TEST(ConnectivityParts, OptionsOutOfRangeAreRefused) {
+    const Mesh mesh = drm_test::icosphere(2);
+    for (int parts : {-1, 3}) {
+        EncodeOptions options;
+        options.connectivityParts = parts;
+        try {
+            encode(mesh, options);
+            ADD_FAILURE() << parts << " parts accepted";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::InvalidInput);
+            EXPECT_NE(std::string(e.what()).find("connectivity parts"), std::string::npos) << e.what();
+        }
+    }
+    const Encoded encoded = encode(mesh);
+    DecodeOptions negative;
+    negative.threads = -1;
+    EXPECT_THROW(decode(encoded.bytes.data(), encoded.bytes.size(), negative), Error);
+}
+
 // The payload alone: what is written reads back, and each field out of
 // range is refused by name.
 TEST(ConnectivityParts, PayloadReadsBackAndRefusesFieldsOutOfRange) {
@@ -109,7 +128,7 @@ TEST(ConnectivityParts, PayloadReadsBackAndRefusesFieldsOutOfRange) {
     EXPECT_NE(refusal(bytes, 10, 3, 6).find("faces"), std::string::npos);
     EXPECT_NE(refusal(bytes, 9, 3, 12).find("kept vert"), std::string::npos);  // vertex 4 of part 2's 4
     EXPECT_NE(refusal(bytes, 1, 3, 12).find("fewer than two vertices"), std::string::npos);
-    for (size_t cut = 0; cut + 5 < bytes.size(); ++cut)  // truncated before part 1's bytes end
+    for (size_t cut = 0; cut + second.size() < bytes.size(); ++cut)  // truncated before part 1's bytes end
         EXPECT_FALSE(refusal(std::vector<uint8_t>(bytes.begin(), bytes.begin() + cut), 10, 3, 12).empty()) << cut;
     ConnectivityParts atZero = layout;
     atZero.split = 0;
