@@ -13,6 +13,7 @@
 //   decodeAttributeSections      (attribute_sections.h)
 //   dequantizeVertices, fillStats
 #include <algorithm>
+#include <atomic>
 #include <memory>
 #include <string>
 #include <thread>
@@ -114,8 +115,11 @@ struct RebuiltFaces {
     std::vector<uint64_t> histogram;
 };
 
-// progress: may be null (a part decoded beside another).
-RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOptions& options, ProgressReporter* progress) {
+// progress: may be null (a part decoded beside another). stop, if given, is
+// looked at every 1,024 faces: once set (the other part failed or was
+// cancelled), this one gives up too.
+RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOptions& options, ProgressReporter* progress,
+                         const std::atomic<bool>* stop = nullptr) {
     const FileHeader& header = d.header;
     const std::vector<int32_t>& grid = *s.grid;
     const size_t faceCount = s.faceCount;
@@ -205,6 +209,8 @@ RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOpt
                 throw Error(ErrorKind::Corrupt, "corrupt file: face " + std::to_string(traversal.triangleCount()) + ": " + e.what());
             }
             if (progress) progress->tick(0.05 + 0.9 * double(traversal.triangleCount()) / double(faceCount));
+            if (stop && traversal.triangleCount() % 1024 == 0 && stop->load(std::memory_order_relaxed))
+                throw Error(ErrorKind::Cancelled, "stopped beside the other connectivity part");
         }
     }
     if (traversal.triangleCount() != faceCount)
@@ -255,10 +261,12 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
     second.kept = &parts.keptInSecond;
     RebuiltFaces a, b;
     if (secondThreadAllowed(options)) {
-        std::future<RebuiltFaces> later = startBeside([&] { return decodeRanks(d, second, options, nullptr); });
+        std::atomic<bool> stop(false);
+        std::future<RebuiltFaces> later = startBeside([&] { return decodeRanks(d, second, options, nullptr, &stop); });
         try {
             a = decodeRanks(d, first, options, &progress);
         } catch (...) {
+            stop = true;  // part 1's error (or a cancel) is the one reported
             later.wait();  // what it refers to lives here
             throw;
         }

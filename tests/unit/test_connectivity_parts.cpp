@@ -77,6 +77,26 @@ TEST(ConnectivityParts, LargeMeshesAreSplitByDefault) {
     EXPECT_EQ(inspect(split.bytes).stats.connectivityParts, 2);
 }
 
+// A cancel while part 1 decodes ends the decoding with a Cancelled error,
+// on one thread or two (the thread of part 2 is waited for, and told to
+// stop, before the error leaves decode()).
+TEST(ConnectivityParts, CancelStopsBothParts) {
+    const Encoded split = encode(drm_test::gridPatch(128, false, 0.2, 7));
+    ASSERT_EQ(split.stats.connectivityParts, 2);
+    for (int threads : {1, 2}) {
+        SCOPED_TRACE(threads);
+        DecodeOptions options;
+        options.threads = threads;
+        options.progress = [](double fraction, const char*) { return fraction < 0.3; };  // part 1 a third done
+        try {
+            decode(split.bytes.data(), split.bytes.size(), options);
+            ADD_FAILURE() << "not cancelled";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::Cancelled) << e.what();
+        }
+    }
+}
+
 TEST(ConnectivityParts, OptionsOutOfRangeAreRefused) {
     const Mesh mesh = drm_test::icosphere(2);
     for (int parts : {-1, 3}) {
