@@ -11,6 +11,7 @@
 
 #include "connectivity_parts.h"
 #include "drm/drm.h"
+#include "drm_sections.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"
 
@@ -114,6 +115,38 @@ TEST(ConnectivityParts, OptionsOutOfRangeAreRefused) {
     DecodeOptions negative;
     negative.threads = -1;
     EXPECT_THROW(decode(encoded.bytes.data(), encoded.bytes.size(), negative), Error);
+}
+
+// A file whose first part would start a component on vertices that are all
+// the second part's (its split moved to 1, under a fresh checksum) is
+// refused as corrupt, naming the start triangle: the two parts could
+// otherwise hold the same faces.
+TEST(ConnectivityParts, FirstPartStartingPastItsVerticesIsCorrupt) {
+    Mesh mesh = drm_test::icosphere(2);
+    drm_test::addVertex(mesh, -10, -10, -10);  // grid point (0, 0, 0): vertex 0, in no face
+    EncodeOptions options;
+    options.connectivityParts = 2;
+    const Encoded encoded = encode(mesh, options);
+    ASSERT_EQ(encoded.stats.connectivityParts, 2);
+    std::vector<drm_test::SectionSpan> sections;
+    ASSERT_TRUE(drm_test::parseSections(encoded.bytes, &sections));
+    const std::vector<uint8_t> payload = drm_test::payloadsOf(encoded.bytes, sections)[1];
+    const uint64_t vertices = mesh.vertexCount();
+    ConnectivityParts parts = readConnectivityParts(payload.data(), payload.size(), vertices, encoded.stats.components,
+                                                    mesh.faceCount());
+    ASSERT_GT(parts.split, 1u);
+    const std::vector<uint8_t> first(parts.first, parts.first + parts.firstSize),
+        second(parts.second, parts.second + parts.secondSize);
+    parts.split = 1;
+    parts.keptInSecond.clear();
+    const std::vector<uint8_t> moved = drm_test::withPayload(encoded.bytes, 1, writeConnectivityParts(parts, first, second));
+    try {
+        decode(moved);
+        ADD_FAILURE() << "decoded";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::Corrupt) << e.what();
+        EXPECT_NE(std::string(e.what()).find("past the first part's vertices"), std::string::npos) << e.what();
+    }
 }
 
 // The payload alone: what is written reads back, and each field out of
