@@ -29,22 +29,32 @@ int64_t floorDiv(int64_t a, int64_t b) {  // b > 0
 }
 
 // The state both sides share: coarse positions of all vertices, full
-// positions and residual sizes of the refined ones, the triangles around
-// each vertex, and the adaptive models.
+// positions of the refined ones, the triangles around each vertex, and per
+// predictor its residual sizes and adaptive models. The decoder follows
+// the one predictor its file names; the encoder follows all of them at
+// once: the refinement order and the refined positions are the same for
+// every predictor, so the neighbours are gathered once a vertex (they cost
+// about two thirds of a pass), and only predictions, contexts and symbols
+// are each predictor's own.
 class Refiner {
 public:
     Refiner(const std::vector<int32_t>& coarse, int lowBits, const std::vector<uint32_t>& triangles,
-            RefinePredictor mode)
-        : mode_(mode),
-          coarse_(coarse),
+            const std::vector<RefinePredictor>& predictors)
+        : coarse_(coarse),
           triangles_(triangles),
           lowBits_(lowBits),
           cell_(int64_t(1) << lowBits),
           n_(coarse.size() / 3),
           full_(coarse.size(), 0),
-          refined_(n_, 0),
-          activity_(n_, 0),
-          models_(size_t(kContexts), AdaptiveFrequencies(std::vector<uint16_t>(size_t(1) << lowBits, 1))) {
+          refined_(n_, 0) {
+        for (RefinePredictor predictor : predictors) {
+            modes_.emplace_back();
+            Mode& m = modes_.back();
+            m.predictor = predictor;
+            m.activity.assign(n_, 0);
+            m.models.assign(size_t(kContexts), AdaptiveFrequencies(std::vector<uint16_t>(size_t(1) << lowBits, 1)));
+            curvature_ |= predictor == RefinePredictor::Curvature;
+        }
         // Triangles around each vertex (compressed rows), and the order of
         // refinement: vertices as the triangles first reach them, then the
         // vertices of no triangle in index order.
@@ -70,11 +80,15 @@ public:
     }
 
     const std::vector<uint32_t>& order() const { return order_; }
+    int predictorCount() const { return int(modes_.size()); }
+    // A predictor the encoder gave up on is no longer followed.
+    void drop(int mode) { modes_[size_t(mode)].live = false; }
 
-    // Prepares the predictions for vertex v.
+    // Prepares every live predictor's prediction for vertex v.
     void forecast(uint32_t v) {
         int64_t parallelogram[3] = {0, 0, 0}, average[3] = {0, 0, 0};
-        int64_t parallelograms = 0, neighbours = 0, activitySum = 0, activityCount = 0;
+        int64_t parallelograms = 0, neighbours = 0, activityCount = 0;
+        for (Mode& m : modes_) m.activitySum = 0;  // a dropped predictor's is summed, never read
         for (uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
             const uint32_t f = incident_[i];
             const uint32_t* t = &triangles_[3 * size_t(f)];
@@ -82,12 +96,10 @@ public:
             const uint32_t a = t[(at + 1) % 3], b = t[(at + 2) % 3];
             for (uint32_t u : {a, b}) {
                 // Twice the position: full if refined, else the cell centre.
-                for (int k = 0; k < 3; ++k)
-                    average[k] += refined_[u] ? 2 * int64_t(full_[3 * size_t(u) + k])
-                                              : 2 * (int64_t(coarse_[3 * size_t(u) + k]) << lowBits_) + cell_ - 1;
+                for (int k = 0; k < 3; ++k) average[k] += twicePosition(u, k);
                 ++neighbours;
                 if (refined_[u]) {
-                    activitySum += activity_[u];
+                    for (Mode& m : modes_) m.activitySum += m.activity[u];
                     ++activityCount;
                 }
             }
@@ -106,13 +118,9 @@ public:
                 ++parallelograms;
             }
         }
-        const RefinePredictor mode = mode_;
-        kind_ = parallelograms > 0 ? 0 : neighbours > 0 ? 1 : 2;
-        if (mode == RefinePredictor::Average && neighbours > 0) kind_ = 1;
         int64_t laplacian[3] = {0, 0, 0};  // in kScale units, summed over refined neighbours
         int64_t laplacians = 0;
-        if (mode == RefinePredictor::Curvature && neighbours > 0) {
-            kind_ = 1;
+        if (curvature_ && neighbours > 0) {
             for (uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
                 const uint32_t* t = &triangles_[3 * size_t(incident_[i])];
                 for (int c = 0; c < 3; ++c) {
@@ -134,47 +142,53 @@ public:
                     ++laplacians;
                 }
             }
-            if (laplacians > 0) kind_ = 0;
         }
-        activityClass_ = 0;
-        if (activityCount > 0) {
-            const int64_t twiceMean = (2 * activitySum + activityCount / 2) / activityCount;
-            activityClass_ = 1 + std::min(bitLength(uint64_t(twiceMean)), kActivities - 2);
+        for (Mode& m : modes_) {
+            if (!m.live) continue;
+            m.kind = parallelograms > 0 ? 0 : neighbours > 0 ? 1 : 2;
+            if (m.predictor == RefinePredictor::Average && neighbours > 0) m.kind = 1;
+            if (m.predictor == RefinePredictor::Curvature && neighbours > 0) m.kind = laplacians > 0 ? 0 : 1;
+            m.activityClass = 0;
+            if (activityCount > 0) {
+                const int64_t twiceMean = (2 * m.activitySum + activityCount / 2) / activityCount;
+                m.activityClass = 1 + std::min(bitLength(uint64_t(twiceMean)), kActivities - 2);
+            }
+            for (int k = 0; k < 3; ++k) {
+                const int64_t low = (int64_t(coarse_[3 * size_t(v) + k]) << lowBits_) * kScale;
+                int64_t p = 0;
+                if (m.predictor == RefinePredictor::Curvature && m.kind == 0)
+                    p = floorDiv(average[k] * kScale, 2 * neighbours) + floorDiv(laplacian[k], laplacians);
+                else if (m.kind == 0 && m.predictor == RefinePredictor::Blend)
+                    p = floorDiv(parallelogram[k] * kScale * neighbours + average[k] * kScale * parallelograms / 2,
+                                 2 * parallelograms * neighbours);
+                else if (m.kind == 0) p = floorDiv(parallelogram[k] * kScale, parallelograms);
+                else if (m.kind == 1) p = floorDiv(average[k] * kScale, 2 * neighbours);
+                else p = low + (cell_ - 1) * kScale / 2;
+                const int64_t offset = p - low, top = (cell_ - 1) * kScale;
+                m.clamped[k] = offset < 0 || offset > top;
+                m.offset[k] = std::min(std::max(offset, int64_t(0)), top);
+            }
+            m.symbolSum = 0;
         }
-        for (int k = 0; k < 3; ++k) {
-            const int64_t low = (int64_t(coarse_[3 * size_t(v) + k]) << lowBits_) * kScale;
-            int64_t p = 0;
-            if (mode == RefinePredictor::Curvature && kind_ == 0)
-                p = floorDiv(average[k] * kScale, 2 * neighbours) + floorDiv(laplacian[k], laplacians);
-            else if (kind_ == 0 && mode == RefinePredictor::Blend)
-                p = floorDiv(parallelogram[k] * kScale * neighbours + average[k] * kScale * parallelograms / 2, 2 * parallelograms * neighbours);
-            else if (kind_ == 0) p = floorDiv(parallelogram[k] * kScale, parallelograms);
-            else if (kind_ == 1) p = floorDiv(average[k] * kScale, 2 * neighbours);
-            else p = low + (cell_ - 1) * kScale / 2;
-            const int64_t offset = p - low, top = (cell_ - 1) * kScale;
-            clamped_[k] = offset < 0 || offset > top;
-
-            offset_[k] = std::min(std::max(offset, int64_t(0)), top);
-        }
-        symbolSum_ = 0;
     }
 
-    AdaptiveFrequencies& model(int axis) {
-        const int axisClass = axis == 0 ? 0 : 1 + std::min(symbolSum_, 2);
-        const int context = ((kind_ * kActivities + activityClass_) * kAxisClasses + axisClass) * 2 + clamped_[axis];
-        return models_[size_t(context)];
+    AdaptiveFrequencies& model(int mode, int axis) {
+        Mode& m = modes_[size_t(mode)];
+        const int axisClass = axis == 0 ? 0 : 1 + std::min(m.symbolSum, 2);
+        const int context = ((m.kind * kActivities + m.activityClass) * kAxisClasses + axisClass) * 2 + m.clamped[axis];
+        return m.models[size_t(context)];
     }
 
     // Symbols order the cell's values by distance from the prediction,
     // nearer first, the lower value first on a tie.
-    uint32_t symbolOf(int axis, uint32_t value) const {
+    uint32_t symbolOf(int mode, int axis, uint32_t value) const {
         uint32_t symbol = 0;
-        walk(axis, [&](uint32_t candidate) { return candidate == value ? true : (++symbol, false); });
+        walk(mode, axis, [&](uint32_t candidate) { return candidate == value ? true : (++symbol, false); });
         return symbol;
     }
-    uint32_t valueOf(int axis, uint32_t symbol) const {
+    uint32_t valueOf(int mode, int axis, uint32_t symbol) const {
         uint32_t value = 0;
-        walk(axis, [&](uint32_t candidate) {
+        walk(mode, axis, [&](uint32_t candidate) {
             if (symbol == 0) {
                 value = candidate;
                 return true;
@@ -185,17 +199,20 @@ public:
         return value;
     }
 
-    void coded(uint32_t symbol) { symbolSum_ += int(symbol); }
+    void coded(int mode, uint32_t symbol) { modes_[size_t(mode)].symbolSum += int(symbol); }
 
     void settle(uint32_t v, const int32_t* position) {
-        int64_t residual = 0;
-        for (int k = 0; k < 3; ++k) {
-            full_[3 * size_t(v) + k] = position[k];
-            const int64_t p = offset_[k] + (int64_t(coarse_[3 * size_t(v) + k]) << lowBits_) * kScale;
-            const int64_t d = int64_t(position[k]) * kScale - p;
-            residual += d < 0 ? -d : d;
+        for (int k = 0; k < 3; ++k) full_[3 * size_t(v) + k] = position[k];
+        for (Mode& m : modes_) {
+            if (!m.live) continue;
+            int64_t residual = 0;
+            for (int k = 0; k < 3; ++k) {
+                const int64_t p = m.offset[k] + (int64_t(coarse_[3 * size_t(v) + k]) << lowBits_) * kScale;
+                const int64_t d = int64_t(position[k]) * kScale - p;
+                residual += d < 0 ? -d : d;
+            }
+            m.activity[v] = uint32_t(std::min<int64_t>(residual / kScale, 0xFFFFFFF));
         }
-        activity_[v] = uint32_t(std::min<int64_t>(residual / kScale, 0xFFFFFFF));
         refined_[v] = 1;
     }
 
@@ -208,8 +225,8 @@ public:
 
 private:
     template <typename Visit>
-    void walk(int axis, Visit visit) const {
-        const int64_t p = offset_[axis];
+    void walk(int mode, int axis, Visit visit) const {
+        const int64_t p = modes_[size_t(mode)].offset[axis];
         int64_t below = p / kScale, above = below + 1;  // below <= p < above (in steps)
         while (below >= 0 || above < cell_) {
             const bool takeBelow =
@@ -224,7 +241,18 @@ private:
         }
     }
 
-    RefinePredictor mode_;
+    // One predictor's own state.
+    struct Mode {
+        RefinePredictor predictor = RefinePredictor::Parallelogram;
+        bool live = true;
+        std::vector<uint32_t> activity;  // per refined vertex: its residual's size under this predictor
+        std::vector<AdaptiveFrequencies> models;
+        int64_t activitySum = 0;
+        int kind = 2, activityClass = 0, symbolSum = 0;
+        int64_t offset[3] = {0, 0, 0};
+        int clamped[3] = {0, 0, 0};
+    };
+
     const std::vector<int32_t>& coarse_;
     const std::vector<uint32_t>& triangles_;
     int lowBits_;
@@ -232,12 +260,9 @@ private:
     size_t n_;
     std::vector<int32_t> full_;
     std::vector<uint8_t> refined_;
-    std::vector<uint32_t> activity_;
-    std::vector<AdaptiveFrequencies> models_;
+    std::vector<Mode> modes_;
+    bool curvature_ = false;  // a Curvature predictor is followed: the Laplacians are gathered
     std::vector<uint32_t> first_, incident_, order_;
-    int kind_ = 2, activityClass_ = 0, symbolSum_ = 0;
-    int64_t offset_[3] = {0, 0, 0};
-    int clamped_[3] = {0, 0, 0};
 };
 
 }  // namespace
@@ -277,49 +302,47 @@ RefinePayload readRefinePayload(const uint8_t* data, size_t size, int bits) {
     return p;
 }
 
-namespace {
-
-// Codes the low bits with one predictor; false, and nothing kept, as soon
-// as the stream is sure to take more than maxBytes.
-bool encodeWith(const std::vector<int32_t>& fine, const std::vector<int32_t>& coarse, int lowBits,
-                const std::vector<uint32_t>& triangles, RefinePredictor predictor, size_t maxBytes,
-                std::vector<uint8_t>& out) {
-    Refiner refiner(coarse, lowBits, triangles, predictor);
-    RangeEncoder coder;
-    for (uint32_t v : refiner.order()) {
-        if (coder.bytesAtLeast() > maxBytes) return false;
-        refiner.forecast(v);
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t value = uint32_t(fine[3 * size_t(v) + k] - refiner.cellLow(v, k));
-            const uint32_t symbol = refiner.symbolOf(k, value);
-            refiner.model(k).encode(coder, symbol);
-            refiner.coded(symbol);
-        }
-        refiner.settle(v, &fine[3 * size_t(v)]);
-    }
-    out = coder.finish();
-    return out.size() <= maxBytes;
-}
-
-}  // namespace
-
-// Every predictor, the smallest stream kept (the first of equal ones). A
-// predictor is dropped as soon as its stream must grow past the best so
-// far, which changes nothing in what is kept. Refine's estimates and
-// attempts code the low bits of every vertex four times; losing predictors
-// mostly fall behind late, so this spares only a few percent of that.
+// Every predictor, followed together in one pass (Refiner), the smallest
+// stream kept (the first of equal ones). A predictor is dropped as soon as
+// its stream must take more than maxBytes. Until the twenty-first session
+// the predictors were coded one after the other, each dropped once it had
+// to grow past the best so far: the same streams and the same choice.
 Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const std::vector<uint32_t>& triangles,
                             size_t maxBytes) {
     const std::vector<int32_t> coarse = coarsenGrid(fine, lowBits);
+    std::vector<RefinePredictor> predictors;
+    for (int p = 0; p < kRefinePredictors; ++p) predictors.push_back(RefinePredictor(p));
+    Refiner refiner(coarse, lowBits, triangles, predictors);
+    std::vector<RangeEncoder> coders(predictors.size());
+    std::vector<uint8_t> live(predictors.size(), 1);
+    size_t liveCount = predictors.size();
+    for (uint32_t v : refiner.order()) {
+        for (size_t m = 0; m < coders.size(); ++m)
+            if (live[m] && coders[m].bytesAtLeast() > maxBytes) {
+                live[m] = 0;
+                refiner.drop(int(m));
+                --liveCount;
+            }
+        if (liveCount == 0) break;
+        refiner.forecast(v);
+        for (size_t m = 0; m < coders.size(); ++m) {
+            if (!live[m]) continue;
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t value = uint32_t(fine[3 * size_t(v) + k] - refiner.cellLow(v, k));
+                const uint32_t symbol = refiner.symbolOf(int(m), k, value);
+                refiner.model(int(m), k).encode(coders[m], symbol);
+                refiner.coded(int(m), symbol);
+            }
+        }
+        refiner.settle(v, &fine[3 * size_t(v)]);
+    }
     Refinement best;
     best.overBudget = true;
-    for (int p = 0; p < kRefinePredictors; ++p) {
-        if (!best.overBudget && best.bytes.empty()) break;  // nothing is smaller than empty
-        // A later predictor must be strictly smaller to be kept.
-        const size_t budget = best.overBudget ? maxBytes : best.bytes.size() - 1;
-        std::vector<uint8_t> bytes;
-        if (!encodeWith(fine, coarse, lowBits, triangles, RefinePredictor(p), budget, bytes)) continue;
-        best.predictor = RefinePredictor(p);
+    for (size_t m = 0; m < coders.size(); ++m) {
+        if (!live[m]) continue;
+        std::vector<uint8_t> bytes = coders[m].finish();
+        if (bytes.size() > maxBytes || (!best.overBudget && bytes.size() >= best.bytes.size())) continue;
+        best.predictor = predictors[m];
         best.bytes = std::move(bytes);
         best.overBudget = false;
     }
@@ -329,16 +352,16 @@ Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const
 
 std::vector<int32_t> decodeRefinement(const RefinePayload& payload, const std::vector<int32_t>& coarse,
                                       const std::vector<uint32_t>& triangles) {
-    Refiner refiner(coarse, payload.lowBits, triangles, payload.predictor);
+    Refiner refiner(coarse, payload.lowBits, triangles, {payload.predictor});
     RangeDecoder coder(payload.refinement, payload.refinementSize);
     std::vector<int32_t> fine(coarse.size());
     for (uint32_t v : refiner.order()) {
         refiner.forecast(v);
         int32_t* at = &fine[3 * size_t(v)];
         for (int k = 0; k < 3; ++k) {
-            const uint32_t symbol = refiner.model(k).decode(coder);
-            refiner.coded(symbol);
-            at[k] = refiner.cellLow(v, k) + int32_t(refiner.valueOf(k, symbol));
+            const uint32_t symbol = refiner.model(0, k).decode(coder);
+            refiner.coded(0, symbol);
+            at[k] = refiner.cellLow(v, k) + int32_t(refiner.valueOf(0, k, symbol));
         }
         refiner.settle(v, at);
         if (coder.bytesPastEnd() > 0)
