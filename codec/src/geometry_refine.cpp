@@ -47,6 +47,8 @@ public:
           n_(coarse.size() / 3),
           full_(coarse.size(), 0),
           refined_(n_, 0) {
+        if (predictors.empty() || predictors.size() > size_t(kRefinePredictors))
+            throw Error(ErrorKind::Internal, "internal error: a refiner follows 1 to 4 predictors");
         for (RefinePredictor predictor : predictors) {
             modes_.emplace_back();
             Mode& m = modes_.back();
@@ -88,7 +90,12 @@ public:
     void forecast(uint32_t v) {
         int64_t parallelogram[3] = {0, 0, 0}, average[3] = {0, 0, 0};
         int64_t parallelograms = 0, neighbours = 0, activityCount = 0;
-        for (Mode& m : modes_) m.activitySum = 0;  // a dropped predictor's is summed, never read
+        // Each predictor's residual sizes summed over the refined neighbours
+        // (a dropped predictor's too, never read).
+        const size_t modeCount = modes_.size();
+        const uint32_t* activityOf[kRefinePredictors];
+        int64_t activitySum[kRefinePredictors] = {};
+        for (size_t m = 0; m < modeCount; ++m) activityOf[m] = modes_[m].activity.data();
         for (uint32_t i = first_[v]; i < first_[v + 1]; ++i) {
             const uint32_t f = incident_[i];
             const uint32_t* t = &triangles_[3 * size_t(f)];
@@ -99,7 +106,7 @@ public:
                 for (int k = 0; k < 3; ++k) average[k] += twicePosition(u, k);
                 ++neighbours;
                 if (refined_[u]) {
-                    for (Mode& m : modes_) m.activitySum += m.activity[u];
+                    for (size_t m = 0; m < modeCount; ++m) activitySum[m] += activityOf[m][u];
                     ++activityCount;
                 }
             }
@@ -143,14 +150,15 @@ public:
                 }
             }
         }
-        for (Mode& m : modes_) {
+        for (size_t mode = 0; mode < modeCount; ++mode) {
+            Mode& m = modes_[mode];
             if (!m.live) continue;
             m.kind = parallelograms > 0 ? 0 : neighbours > 0 ? 1 : 2;
             if (m.predictor == RefinePredictor::Average && neighbours > 0) m.kind = 1;
             if (m.predictor == RefinePredictor::Curvature && neighbours > 0) m.kind = laplacians > 0 ? 0 : 1;
             m.activityClass = 0;
             if (activityCount > 0) {
-                const int64_t twiceMean = (2 * m.activitySum + activityCount / 2) / activityCount;
+                const int64_t twiceMean = (2 * activitySum[mode] + activityCount / 2) / activityCount;
                 m.activityClass = 1 + std::min(bitLength(uint64_t(twiceMean)), kActivities - 2);
             }
             for (int k = 0; k < 3; ++k) {
@@ -247,7 +255,6 @@ private:
         bool live = true;
         std::vector<uint32_t> activity;  // per refined vertex: its residual's size under this predictor
         std::vector<AdaptiveFrequencies> models;
-        int64_t activitySum = 0;
         int kind = 2, activityClass = 0, symbolSum = 0;
         int64_t offset[3] = {0, 0, 0};
         int clamped[3] = {0, 0, 0};
