@@ -2,10 +2,12 @@
 // the shared traversal with the true apex of every open edge and code its
 // distance rank.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <future>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -72,6 +74,17 @@ constexpr size_t kEarlyConnectivityUpToVertices = size_t(1) << 22;
 // to the two stages' (igea x4: 197-207 MiB and 1.8-2.1 s, against 191-199
 // MiB and 1.6-1.8 s, blocks of 4 MiB and more mapped apart).
 constexpr size_t kSectionThreadsBesideUpToVertices = size_t(1) << 18;
+// Up to this many vertices, refine's attempts run beside the tree's, each
+// after its estimate on that estimate's thread: the three attempts are
+// held at once (on larger meshes they come one after the other, as
+// before).
+constexpr size_t kRefineAttemptsBesideUpToVertices = size_t(1) << 18;
+// An attempt beside is made at once where its estimate would be worth it
+// against a file this many times the tree's vertex section (the
+// connectivity and the rest: 1.02 to 1.33 on the corpus's meshes that
+// try refine, cycloidal 1.57, star-cgal's 14 vertices 2.3);
+// else it waits for the tree's attempt to tell its total.
+constexpr double kSureTreeTotal = 1.2;
 // Below this many faces, the connectivity is also coded over the vertex
 // section's order (formats 1 to 8; kFlagSectionNumbering) besides Morton
 // order, and the smaller file kept. Regular meshes break their many ties
@@ -935,6 +948,8 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         int lowBits = 0;
         GeometryTreeTrials trials;
         size_t bytes = SIZE_MAX;
+        double growth = 0.0;              // the connectivity's growth on a crowded coarse grid, in bytes
+        std::optional<Attempt> attempt;  // made beside the tree's attempt
     };
     std::vector<Estimate> estimates;
     for (int lowBits : kAutoRefineLowBits)
@@ -950,8 +965,34 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         const double skipAbove = double(treeGeometry) + slack - minimumGain * treeTotal;
         e.bytes = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, e.lowBits, options.index,
                                          e.trials, skipAbove);
+        e.growth = e.trials.nearest && e.trials.nearest->spacing <= kCrowdedCoarseSpacing
+                       ? kCrowdedConnectivityGrowth * double(mesh.vertexCount()) / 8.0
+                       : 0.0;
     };
-    std::vector<std::future<void>> estimating;
+    // Whether the estimate is worth an attempt against a file of treeTotal
+    // bytes: every attempt made saves at least the gain asked, by the
+    // estimate, within its slack.
+    auto promising = [&](const Estimate& e, double treeTotal) {
+        return e.bytes != SIZE_MAX && double(treeGeometry) + slack - double(e.bytes) - e.growth >= minimumGain * treeTotal;
+    };
+    EncodeOptions refine = options;
+    refine.geometry = GeometryCoder::Refine;
+    const bool attemptsBeside = mesh.vertexCount() <= kRefineAttemptsBesideUpToVertices;
+    // Set when this function leaves, the tree's attempt having thrown (a
+    // cancel, an error) or every thread being done: an attempt beside
+    // still running then stops at its next report (as Cancelled, which
+    // nobody reads) instead of being waited for to its end.
+    std::atomic<bool> leaving{false};
+    std::vector<std::future<void>> estimating;  // declared after what the threads read: destroyed (and waited for) first
+    // The tree attempt's total, for attempts that wait for it; declared
+    // after the threads' futures, so that an exception breaks the promise
+    // (waking them) before the futures wait for them.
+    std::promise<size_t> treeTotalGiven;
+    const std::shared_future<size_t> treeTotalKnown = treeTotalGiven.get_future().share();
+    struct RaiseOnExit {
+        std::atomic<bool>& flag;
+        ~RaiseOnExit() { flag = true; }
+    } raiseOnExit{leaving};  // declared last: raised first
     if (secondThreadAllowed(options)) {
         // Beside the attempt, whose total is not known yet, the estimates
         // stop at the looser bound a file no larger than its vertex section
@@ -961,27 +1002,48 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         // thread of its own: together they take about twice the attempt's
         // time (venus), so on two cores the three end sooner than the
         // estimates one after the other beside it.
-        for (Estimate& e : estimates)
-            estimating.push_back(startBeside([&estimate, &e, treeGeometry] { estimate(e, double(treeGeometry)); }));
+        // An estimate promising against that looser bound goes on to its
+        // attempt on the same thread (each attempt is the same whenever it
+        // is made): the test below keeps it only where the attempt's bound
+        // would have made it. Before, the attempts came one after the other
+        // once the tree's was done (armadillo-43k, whole process: 1.16 s
+        // then, 0.80 s now; docs/speed.md).
+        for (Estimate& each : estimates) {
+            Estimate* e = &each;
+            estimating.push_back(startBeside([&, e, treeGeometry, treeTotalKnown] {
+                estimate(*e, double(treeGeometry));
+                if (!attemptsBeside || !promising(*e, double(treeGeometry))) return;
+                // Promising against any file up to kSureTreeTotal times the
+                // tree's section: made at once. Less clearly: made once the
+                // tree's attempt tells its total, and only where the test
+                // below will keep it (camel's estimate with 2 low bits).
+                if (!promising(*e, kSureTreeTotal * double(treeGeometry)) &&
+                    !promising(*e, double(treeTotalKnown.get())))
+                    return;
+                const Progress untilLeaving = [&leaving](double, const char*) { return !leaving.load(); };
+                ProgressReporter quiet(untilLeaving);  // shows nothing
+                e->attempt = encodeWithGeometry(mesh, prepared, cut, refine, e->lowBits, quiet, &e->trials);
+                e->trials = GeometryTreeTrials();
+            }));
+        }
     }
     Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, early);
     const size_t treeTotal = best.encoded.bytes.size();
+    treeTotalGiven.set_value(treeTotal);
+    if (!estimating.empty()) progress.stage("trying refine", 0.95);
     for (std::future<void>& running : estimating) running.get();
     if (estimating.empty())
         for (Estimate& e : estimates) estimate(e, double(treeTotal));
     const double worthIt = (1.0 - minimumGain) * double(treeTotal);
-    EncodeOptions refine = options;
-    refine.geometry = GeometryCoder::Refine;
     for (Estimate& e : estimates) {
         // The estimate's trees serve its own attempt only: freed after it
         // (the estimates ran together, so each one's are held till here).
         GeometryTreeTrials trials = std::move(e.trials);
-        if (e.bytes == SIZE_MAX) continue;
-        const double growth = trials.nearest && trials.nearest->spacing <= kCrowdedCoarseSpacing
-                                  ? kCrowdedConnectivityGrowth * double(mesh.vertexCount()) / 8.0
-                                  : 0.0;
-        if (double(treeGeometry) + slack - double(e.bytes) - growth < minimumGain * double(treeTotal)) continue;
-        Attempt refined = encodeWithGeometry(mesh, prepared, cut, refine, e.lowBits, progress, &trials);
+        std::optional<Attempt> made = std::move(e.attempt);
+        e.attempt.reset();
+        if (!promising(e, double(treeTotal))) continue;
+        Attempt refined =
+            made ? std::move(*made) : encodeWithGeometry(mesh, prepared, cut, refine, e.lowBits, progress, &trials);
         if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
             best = std::move(refined);
     }

@@ -2,7 +2,8 @@
 // threads): the vertex section coded beside the topology check, the
 // neighbour graph split between threads, the spanning forest built beside
 // the cheapest-first tree, and refine's estimates run beside the tree's
-// attempt must each come out as they do one after the other.
+// attempt, and refine's attempts beside it, must each come out as they do
+// one after the other.
 //
 // Meshes built in code large enough that every split is taken (16,384
 // vertices and more; one over 2^18, where the vertex section coded beside
@@ -135,6 +136,42 @@ TEST(ThreadAgreement, ACancelWhileTheSecondThreadRunsIsReported) {
     options.progress = nullptr;
     const drm::Encoded encoded = drm::encode(mesh, options);
     EXPECT_EQ(drm::decode(encoded.bytes.data(), encoded.bytes.size()).mesh.triangles.size(), mesh.triangles.size());
+}
+
+// Refine's attempts run beside the tree's (a mesh of tests/data where
+// refine wins, genus3: 2 low bits). A cancel while they run, or while one
+// waits for the tree's total, is reported as Cancelled: the attempts
+// beside stop (a thread left waiting on the tree's total would hang the
+// encoding, one whose exception escaped would end the process), and the
+// same options then encode the mesh with refine, as on one thread.
+TEST(ThreadAgreement, ACancelWhileRefineIsTriedBesideIsReported) {
+    const std::vector<drm_test::NamedMesh> meshes = drm_test::readPlyDirectory(DRM_TEST_DATA_DIR);
+    const auto genus3 = std::find_if(meshes.begin(), meshes.end(),
+                                     [](const drm_test::NamedMesh& m) { return m.name.find("genus3") != std::string::npos; });
+    ASSERT_NE(genus3, meshes.end()) << "genus3.ply is missing from " << DRM_TEST_DATA_DIR;
+    for (const char* cancelAt : {"ranking", "writing", "trying refine"}) {
+        SCOPED_TRACE(cancelAt);
+        drm::EncodeOptions options;
+        options.threads = 2;
+        bool seen = false;
+        options.progress = [&](double, const char* stage) {
+            if (std::string(stage) != cancelAt) return true;
+            seen = true;
+            return false;
+        };
+        try {
+            drm::encode(genus3->mesh, options);
+            ADD_FAILURE() << "the encoding was not cancelled";
+        } catch (const drm::Error& e) {
+            EXPECT_EQ(e.kind(), drm::ErrorKind::Cancelled) << e.what();
+        }
+        EXPECT_TRUE(seen);
+    }
+    drm::EncodeOptions options;
+    const drm::Encoded one = encodeOn(genus3->mesh, options, 1);
+    const drm::Encoded two = encodeOn(genus3->mesh, options, 2);
+    EXPECT_EQ(two.stats.geometry, drm::GeometryCoder::Refine);
+    EXPECT_EQ(one.bytes, two.bytes);
 }
 
 std::vector<std::string> corpusFiles() { return drm_test::plyFilesIn(DRM_SHARED_MESHES_DIR); }
