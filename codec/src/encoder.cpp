@@ -3,6 +3,8 @@
 // distance rank.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <exception>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -950,6 +952,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         size_t bytes = SIZE_MAX;
         double growth = 0.0;              // the connectivity's growth on a crowded coarse grid, in bytes
         std::optional<Attempt> attempt;  // made beside the tree's attempt
+        std::exception_ptr failure;      // what that attempt threw, reported only where it is kept
     };
     std::vector<Estimate> estimates;
     for (int lowBits : kAutoRefineLowBits)
@@ -1008,6 +1011,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         // would have made it. Before, the attempts came one after the other
         // once the tree's was done (armadillo-43k, whole process: 1.16 s
         // then, 0.80 s now; docs/speed.md).
+        estimating.reserve(estimates.size());  // a push_back that threw would wait on a thread waiting here
         for (Estimate& each : estimates) {
             Estimate* e = &each;
             estimating.push_back(startBeside([&, e, treeGeometry, treeTotalKnown] {
@@ -1022,7 +1026,15 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
                     return;
                 const Progress untilLeaving = [&leaving](double, const char*) { return !leaving.load(); };
                 ProgressReporter quiet(untilLeaving);  // shows nothing
-                e->attempt = encodeWithGeometry(mesh, prepared, cut, refine, e->lowBits, quiet, &e->trials);
+                // An attempt made at once may be one the test below drops
+                // (the tree's total past kSureTreeTotal times its section):
+                // what it throws (out of memory) is kept for the test, and
+                // reported only if the attempt is.
+                try {
+                    e->attempt = encodeWithGeometry(mesh, prepared, cut, refine, e->lowBits, quiet, &e->trials);
+                } catch (...) {
+                    e->failure = std::current_exception();
+                }
                 e->trials = GeometryTreeTrials();
             }));
         }
@@ -1030,8 +1042,14 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     Attempt best = encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, early);
     const size_t treeTotal = best.encoded.bytes.size();
     treeTotalGiven.set_value(treeTotal);
-    if (!estimating.empty()) progress.stage("trying refine", 0.95);
-    for (std::future<void>& running : estimating) running.get();
+    // The attempts beside report nothing: waiting for them, this thread
+    // reports, so that the bar moves and a cancel is seen (it raises
+    // `leaving` on the way out, and they stop).
+    for (std::future<void>& running : estimating) {
+        while (running.wait_for(std::chrono::milliseconds(20)) == std::future_status::timeout)
+            progress.stage("trying refine", 0.95);
+        running.get();
+    }
     if (estimating.empty())
         for (Estimate& e : estimates) estimate(e, double(treeTotal));
     const double worthIt = (1.0 - minimumGain) * double(treeTotal);
@@ -1042,6 +1060,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
         std::optional<Attempt> made = std::move(e.attempt);
         e.attempt.reset();
         if (!promising(e, double(treeTotal))) continue;
+        if (e.failure) std::rethrow_exception(e.failure);
         Attempt refined =
             made ? std::move(*made) : encodeWithGeometry(mesh, prepared, cut, refine, e.lowBits, progress, &trials);
         if (double(refined.encoded.bytes.size()) <= worthIt && refined.encoded.bytes.size() < best.encoded.bytes.size())
