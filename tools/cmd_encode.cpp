@@ -78,8 +78,8 @@ const char* const kEncodeHelp =
     "                    unless their seam would be long), 1 or 2\n"
     "  --threads N       threads for one mesh: 1, or 2 (the default where the machine\n"
     "                    has several cores: the vertex coder beside the mesh checks\n"
-    "                    and the connectivity, refine's estimates beside the tree's\n"
-    "                    attempt); with -o and\n"
+    "                    and the connectivity, refine's estimates and attempts beside\n"
+    "                    the tree's attempt); with -o and\n"
     "                    more than one job, each file takes one; never changes the file\n"
     "  -o, --output-dir DIR  write DIR/NAME.drm for every input (several inputs, folders)\n"
     "  -j, --jobs N      files encoded at once with -o (default: the number of cores)\n";

@@ -308,7 +308,8 @@ struct EncodeOptions {
     // connectivity (over 262,144 with the vertex section then on one
     // thread); the neighbour graph in two halves, the
     // spanning forest beside the cheapest-first tree, refine's estimates
-    // beside the tree's attempt, below 20000 faces every other start
+    // and, up to 262,144 vertices, its attempts beside the tree's attempt,
+    // below 20000 faces every other start
     // vertex tried): 1 keeps everything on the calling thread,
     // 2 or more allows a second (briefly a third: the two estimates, the
     // vertex coder's split beside the topology check, the start vertices
