@@ -89,6 +89,7 @@ public:
     const std::vector<uint32_t>& order() const { return order_; }
     // A predictor the encoder gave up on is no longer followed.
     void drop(int mode) { modes_[size_t(mode)].live = false; }
+    bool live(int mode) const { return modes_[size_t(mode)].live; }
 
     // Prepares every live predictor's prediction for vertex v.
     void forecast(uint32_t v) {
@@ -324,20 +325,18 @@ Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const
     std::array<RefinePredictor, kRefinePredictors> predictors;
     for (int p = 0; p < kRefinePredictors; ++p) predictors[size_t(p)] = RefinePredictor(p);
     Refiner<kRefinePredictors> refiner(coarse, lowBits, triangles, predictors);
-    std::vector<RangeEncoder> coders(predictors.size());
-    std::vector<uint8_t> live(predictors.size(), 1);
-    size_t liveCount = predictors.size();
+    std::array<RangeEncoder, kRefinePredictors> coders;
+    size_t liveCount = coders.size();
     for (uint32_t v : refiner.order()) {
         for (size_t m = 0; m < coders.size(); ++m)
-            if (live[m] && coders[m].bytesAtLeast() > maxBytes) {
-                live[m] = 0;
+            if (refiner.live(int(m)) && coders[m].bytesAtLeast() > maxBytes) {
                 refiner.drop(int(m));
                 --liveCount;
             }
         if (liveCount == 0) break;
         refiner.forecast(v);
         for (size_t m = 0; m < coders.size(); ++m) {
-            if (!live[m]) continue;
+            if (!refiner.live(int(m))) continue;
             for (int k = 0; k < 3; ++k) {
                 const uint32_t value = uint32_t(fine[3 * size_t(v) + k] - refiner.cellLow(v, k));
                 const uint32_t symbol = refiner.symbolOf(int(m), k, value);
@@ -350,7 +349,7 @@ Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const
     Refinement best;
     best.overBudget = true;
     for (size_t m = 0; m < coders.size(); ++m) {
-        if (!live[m]) continue;
+        if (!refiner.live(int(m))) continue;
         std::vector<uint8_t> bytes = coders[m].finish();
         if (bytes.size() > maxBytes || (!best.overBudget && bytes.size() >= best.bytes.size())) continue;
         best.predictor = predictors[m];
