@@ -184,8 +184,14 @@ RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOpt
         }
         OpenEdge edge;
         while (traversal.popOpenEdge(edge)) {
-            const EdgeForecast& forecast = model.forecast(edge);
-            const uint32_t rank = coder.get(forecast.context, forecast.boundaryClass);
+            // With boundary flags the candidates and the context are worked
+            // out only for an edge the flag gives an apex (EdgeModel::forecastRank).
+            const EdgeForecast& forecast = model.forecastBoundary(edge);
+            uint32_t rank = 0;
+            if (!model.boundaryFlags() || !coder.getBoundaryFlag(forecast.boundaryClass)) {
+                model.forecastRank(edge);
+                rank = coder.getRank(forecast.context);
+            }
             if (coder.bytesPastEnd() > 0)
                 throw Error(ErrorKind::Corrupt, "corrupt file: the connectivity section ends before the last face");
             if (rank >= histogram.size()) {

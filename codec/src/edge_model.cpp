@@ -140,17 +140,30 @@ int EdgeModel::contextCount() const {
 }
 
 const EdgeForecast& EdgeModel::forecast(const OpenEdge& edge) {
+    forecastBoundary(edge);
+    return forecastRank(edge);
+}
+
+const EdgeForecast& EdgeModel::forecastBoundary(const OpenEdge& edge) {
     EdgeForecast& f = forecast_;
     f.prediction = snapPrediction(predictor_.predict(edge), bits_);
-    FanEnds ends;
+    FanEnds& ends = forecastEnds_;
+    ends = FanEnds();
     if (levers_.gapClosing || frontLever_ || boundaryLever_) ends = fanEnds(edge, admissible_.traversal());
     f.boundaryClass = boundaryLever_ ? boundaryClass(predictor_.firstAheadAttempt(), ends) : -1;
     if (boundaryLever_ && onSeamSide(edge, f.prediction))
         f.boundaryClass = kSeamBoundaryClass + int(ends.boundaryAtI) + int(ends.boundaryAtJ);
-    f.preferred = levers_.gapClosing ? gapClosingVertex(edge, ends, grid_, admissible_) : kNoVertex;
+    f.preferred = kNoVertex;
     f.context = 0;
     f.nearest.clear();
     disagreement_ = Disagreement();  // only an edge where the orders disagree teaches resolved()
+    return f;
+}
+
+const EdgeForecast& EdgeModel::forecastRank(const OpenEdge& edge) {
+    EdgeForecast& f = forecast_;
+    const FanEnds& ends = forecastEnds_;
+    f.preferred = levers_.gapClosing ? gapClosingVertex(edge, ends, grid_, admissible_) : kNoVertex;
     if (f.preferred != kNoVertex) {
         if (levers_.confidenceContext) {
             const std::vector<RankedVertex>& first = nearestCandidates(f.prediction, 1, edge);

@@ -41,7 +41,17 @@ public:
     // codes a boundary flag before each rank (format 10 with the lever).
     bool boundaryFlags() const { return boundaryLever_; }
 
+    // The whole forecast: forecastBoundary, then forecastRank.
     const EdgeForecast& forecast(const OpenEdge& edge);
+    // Its first half, all a boundary flag needs: the prediction and the
+    // boundary class (context 0, nothing listed). The second half, for the
+    // same edge, adds the listed candidates and the context. With boundary
+    // flags a boundary edge's rank 0 is the flag alone, and nothing the
+    // second half works out outlives the edge, so coders skip it there:
+    // past the seam of two parts the nearest admissible vertex can lie far
+    // away (igea: 5 % of its decoding went to such searches).
+    const EdgeForecast& forecastBoundary(const OpenEdge& edge);
+    const EdgeForecast& forecastRank(const OpenEdge& edge);
     // Both use the forecast made last, for the same edge.
     uint32_t rankOf(uint32_t apex, const OpenEdge& edge);
     uint32_t vertexOfRank(uint32_t rank, const OpenEdge& edge);
@@ -90,6 +100,7 @@ private:
     // Format 5: the front order's list for the forecast edge, and which
     // list ranks it; learnOrder keeps score after the apex is known.
     void forecastFrontOrder(const OpenEdge& edge, const FanEnds& ends);
+    FanEnds forecastEnds_;  // forecastBoundary's, for forecastRank
     void learnOrder(uint32_t apex, const OpenEdge& edge);
     void findExtras();
 

@@ -275,7 +275,10 @@ CodedRanks codeRanks(const RankStreamFaces& s, const PreparedMesh& prepared, con
             if (apex != kNoVertex && !inStream(face)) apex = kNoVertex;  // the other part's: the seam
             if (apex != kNoVertex) apex -= offset;
             uint32_t rank = 0;
-            const EdgeForecast& forecast = model.forecast(edge);
+            // With boundary flags a boundary edge's rank 0 is the flag alone:
+            // its candidates and context are not worked out (as decoding).
+            const EdgeForecast& forecast = model.forecastBoundary(edge);
+            if (apex != kNoVertex || !model.boundaryFlags()) model.forecastRank(edge);
             const int context = forecast.context, boundaryClass = forecast.boundaryClass;
             if (apex == kNoVertex) {
                 traversal.closeAsBoundary(edge);

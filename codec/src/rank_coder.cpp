@@ -195,10 +195,17 @@ uint32_t RankDecoder::getStartGap(StartField field) {
 }
 
 uint32_t RankDecoder::get(int extraContext, int boundaryClass) {
-    if (boundary_.on() && boundary_.decode(coder_, boundaryClass)) {
-        previousClass_ = rankClass(0);
-        return 0;
-    }
+    if (boundary_.on() && getBoundaryFlag(boundaryClass)) return 0;
+    return getRank(extraContext);
+}
+
+bool RankDecoder::getBoundaryFlag(int boundaryClass) {
+    if (!boundary_.decode(coder_, boundaryClass)) return false;
+    previousClass_ = rankClass(0);
+    return true;
+}
+
+uint32_t RankDecoder::getRank(int extraContext) {
     AdaptiveFrequencies& model = ranks_.table(previousClass_, extraContext);
     uint32_t rank = model.decode(coder_);
     if (rank == 0 && boundary_.on())
