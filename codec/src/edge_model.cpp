@@ -6,7 +6,6 @@
 
 #include "file_format.h"
 #include "gap_closing.h"
-#include "morton.h"
 #include "quantize.h"
 #include "rank_coder.h"
 
@@ -121,17 +120,15 @@ EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predi
       predictor_(predictor, curvature, grid, candidates, admissible_),
       ranks_(grid, candidates, admissible_),
       frontLever_(formatVersion >= 5 && levers.frontNeighbours),
-      boundaryLever_(formatVersion >= kFirstFormatWithBoundaryFlag && levers.boundaryFlag) {}
+      boundaryLever_(formatVersion >= kFirstFormatWithBoundaryFlag && levers.boundaryFlag),
+      seamFirstBall_(formatVersion >= kFirstFormatWithSeamFirstBall) {}
 
 // In the first part: both ends from the seam on (the apex, if any, lies
 // below it). In the second: the prediction's grid point comes before the
 // part's first vertex in Morton order, in the first part's region.
 bool EdgeModel::onSeamSide(const OpenEdge& edge, const FixedPoint& prediction) const {
     if (seam_ != kNoVertex) return edge.vi >= seam_ && edge.vj >= seam_;
-    if (!secondPart_) return false;
-    const int64_t top = (int64_t(1) << bits_) - 1;
-    auto gridOf = [&](int64_t c) { return uint64_t(std::min(std::max<int64_t>(c >> kSubUnitBits, 0), top)); };
-    return mortonKey(gridOf(prediction.x), gridOf(prediction.y), gridOf(prediction.z)) < firstPartBelow_;
+    return secondPart_ && mortonKeyOfPrediction(prediction, bits_) < firstPartBelow_;
 }
 
 int EdgeModel::contextCount() const {

@@ -64,6 +64,7 @@ public:
     void setSeam(uint32_t first) {
         admissible_.setSeam(first);
         seam_ = first;
+        if (seamFirstBall_) predictor_.searchFirstBallOnlyFrom(first);
     }
     // Format 11: this model ranks the second part, whose first vertex has
     // Morton key `key`: an edge whose prediction lies at a grid point of
@@ -73,6 +74,7 @@ public:
     void setFirstPartBelowKey(uint64_t key) {
         firstPartBelow_ = key;
         secondPart_ = true;
+        if (seamFirstBall_) predictor_.searchFirstBallOnlyBelow(key, bits_);
     }
     // Tells the model the apex of the last forecast edge, once known, so it
     // can learn which candidate order serves this mesh. After rankOf or
@@ -127,6 +129,7 @@ private:
     // Format 11's parts: the seam's side, for the boundary flag's class.
     uint32_t seam_ = kNoVertex;
     bool secondPart_ = false;
+    bool seamFirstBall_;  // format 12: the size step stops at the first ball on the seam's side
     uint64_t firstPartBelow_ = 0;
     bool onSeamSide(const OpenEdge& edge, const FixedPoint& prediction) const;
     // The forecast's list (nearest) holds the order used: the plain one,

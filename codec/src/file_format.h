@@ -21,6 +21,9 @@ constexpr int kFirstFormatWithBoundaryFlag = 10;
 // From 11 a header flag may split the connectivity into two parts
 // (connectivity_parts.h).
 constexpr int kFirstFormatWithTwoParts = 11;
+// From 12 the size step of an edge on a part's seam side searches its
+// first ball only (ApexPredictor::searchFirstBallOnlyFrom / Below).
+constexpr int kFirstFormatWithSeamFirstBall = 12;
 
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
 constexpr uint16_t kFormatVersion = kFileFormatVersion;  // written; read: drm.h's readable range

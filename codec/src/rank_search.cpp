@@ -1,5 +1,7 @@
 #include "rank_search.h"
 
+#include "morton.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,6 +30,12 @@ Vec3 toGridUnits(const FixedPoint& p) {  // for collectNear, which takes a super
 }  // namespace
 
 FixedPoint snapPrediction(Vec3 p, int bits) { return {snapAxis(p.x, bits), snapAxis(p.y, bits), snapAxis(p.z, bits)}; }
+
+uint64_t mortonKeyOfPrediction(const FixedPoint& prediction, int bits) {
+    const int64_t top = (int64_t(1) << bits) - 1;
+    auto gridOf = [&](int64_t c) { return uint64_t(std::min(std::max<int64_t>(c >> kSubUnitBits, 0), top)); };
+    return mortonKey(gridOf(prediction.x), gridOf(prediction.y), gridOf(prediction.z));
+}
 
 RankSearch::RankSearch(const std::vector<int32_t>& grid, const SpatialIndex& candidates,
                        const Admissibility& admissible)

@@ -2,7 +2,7 @@
 # Rewrites the golden .drm files and the meshes they must decode to. Run this
 # only for an intended format change, and say so in the commit: the golden
 # test exists so that no change of the bitstream passes unnoticed.
-# The files of older format versions (v1/ to v10/) are frozen, never rewritten: the
+# The files of older format versions (v1/ to v11/) are frozen, never rewritten: the
 # golden test checks that the decoder still reads them.
 # Usage: tests/golden/regenerate.sh [path/to/drm]
 #        tests/golden/regenerate.sh --check path/to/drm

@@ -9,8 +9,8 @@
 // frame along the walk and tangent signs; v7/: before format 8's start
 // triangles in the connectivity section; v8/: before format 9's Morton
 // numbering; v9/: before format 10's boundary flags; v10/: before format
-// 11's connectivity in two parts), so the decoder keeps reading what users
-// already have.
+// 11's connectivity in two parts; v11/: before format 12's first ball on
+// the seam's side), so the decoder keeps reading what users already have.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -50,6 +50,20 @@ TEST(Golden, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine"); }
 TEST(Golden, BoundaryFlagsAloneOnBlobby) { expectDecodesToGolden("blobby-boundary"); }
 // The connectivity in two parts (format 11), forced on a small scan.
 TEST(Golden, TwoPartsOnBunnyLres) { expectDecodesToGolden("bunny-lres-parts"); }
+
+// Format 11's files, as its last encoder (98ace33, byte for byte
+// a67fd9c's) wrote them: on the seam's side, the size step's wider balls
+// searched too.
+TEST(GoldenFormat11, Torus) { expectDecodesToGolden("torus", "/v11", 11); }
+TEST(GoldenFormat11, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v11", 11); }
+TEST(GoldenFormat11, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v11", 11); }
+TEST(GoldenFormat11, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v11", 11); }
+TEST(GoldenFormat11, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v11", 11); }
+TEST(GoldenFormat11, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v11", 11); }
+TEST(GoldenFormat11, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres", "/v11", 11); }
+TEST(GoldenFormat11, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine", "/v11", 11); }
+TEST(GoldenFormat11, BoundaryFlagsAloneOnBlobby) { expectDecodesToGolden("blobby-boundary", "/v11", 11); }
+TEST(GoldenFormat11, TwoPartsOnBunnyLres) { expectDecodesToGolden("bunny-lres-parts", "/v11", 11); }
 
 // Format 10's files, as its last encoder (ea1d730) wrote them: the
 // connectivity in one part.
@@ -175,7 +189,7 @@ uint8_t highFlags(const std::string& file) {
 // files and later ones set it.
 TEST(GoldenFormat4, FrontNeighbourFlagIsRefused) {
     expectFlagRefused("/v4/blobby-3cc.drm", 0);
-    for (const char* folder : {"/v5", "/v6", "/v7", "/v8", "/v9", "/v10", ""})
+    for (const char* folder : {"/v5", "/v6", "/v7", "/v8", "/v9", "/v10", "/v11", ""})
         EXPECT_EQ(highFlags(std::string(folder) + "/blobby-3cc.drm") & 1, 1) << folder;
 }
 

@@ -227,5 +227,50 @@ TEST(Predictor, FullBallsBreakTiesOfHeightByIndex) {
     });
 }
 
+// Format 12: on a part's seam side the size step searches its first ball
+// only. Edge 0-1 along x at y = 40, its rebuilt triangle behind (y = 43);
+// the one vertex ahead, 3, lies 20 units away, past the first ball (radius
+// 2 max(h, L) = 8) and the second (16): found in the third without the rule.
+struct FarAhead {
+    std::vector<int32_t> grid = {0, 40, 0, 4, 40, 0, 2, 43, 0, 2, 20, 0};
+    std::unique_ptr<SpatialIndex> index = makeGridIndex(grid);
+    Traversal traversal{4, 3, index.get()};
+    Admissibility admissible{traversal, false};
+    OpenEdge edge{0, 1, 2};
+    Vec3 unscaled = midpointApex({0, 40, 0}, {4, 40, 0}, {2, 43, 0});
+};
+
+TEST(Predictor, SeamSideStopsAtTheFirstBallInPartOne) {
+    FarAhead mesh;
+    ApexPredictor everyBall(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
+    EXPECT_NEAR(everyBall.predict(mesh.edge).y, 20.0, 1e-9);
+    EXPECT_EQ(everyBall.firstAheadAttempt(), 2);
+    // Part 1 with the seam at vertex 0: the edge's two ends are past it.
+    ApexPredictor seamSide(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
+    seamSide.searchFirstBallOnlyFrom(0);
+    expectNear(seamSide.predict(mesh.edge), mesh.unscaled);
+    EXPECT_EQ(seamSide.firstAheadAttempt(), -1);
+    EXPECT_TRUE(seamSide.searchedBall());
+    // Seam at vertex 1: end 0 lies before it, so the edge is not on the seam's side.
+    ApexPredictor before(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
+    before.searchFirstBallOnlyFrom(1);
+    EXPECT_NEAR(before.predict(mesh.edge).y, 20.0, 1e-9);
+    EXPECT_EQ(before.firstAheadAttempt(), 2);
+}
+
+TEST(Predictor, SeamSideStopsAtTheFirstBallInPartTwo) {
+    FarAhead mesh;
+    // The prediction's grid point, as EdgeModel snaps it for the seam classes.
+    const uint64_t key = mortonKeyOfPrediction(snapPrediction(mesh.unscaled, 12), 12);
+    ApexPredictor inPartOne(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
+    inPartOne.searchFirstBallOnlyBelow(key + 1, 12);  // part 2 begins past the prediction: it lies in part 1's region
+    expectNear(inPartOne.predict(mesh.edge), mesh.unscaled);
+    EXPECT_EQ(inPartOne.firstAheadAttempt(), -1);
+    ApexPredictor inPartTwo(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
+    inPartTwo.searchFirstBallOnlyBelow(key, 12);  // part 2 begins at it
+    EXPECT_NEAR(inPartTwo.predict(mesh.edge).y, 20.0, 1e-9);
+    EXPECT_EQ(inPartTwo.firstAheadAttempt(), 2);
+}
+
 }  // namespace
 }  // namespace drm

@@ -77,9 +77,9 @@ constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
-constexpr int kFileFormatVersion = 11;
+constexpr int kFileFormatVersion = 12;
 constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 11;
+constexpr int kNewestReadableFormatVersion = 12;
 
 // The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
 // MeshLab rank filter, README's legend): bucket 0 is a component's start
