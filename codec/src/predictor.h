@@ -78,8 +78,10 @@ public:
     // two ends are both >= seam (no such vertex may close it); in part 2
     // (searchFirstBallOnlyBelow), whose index holds no vertex of part 1, a
     // prediction whose grid point, on a grid of `bits` bits per axis, has
-    // a Morton key below `firstPartBelow` (in part 1's region), as
-    // EdgeModel's seam classes tell them.
+    // a Morton key below `firstPartBelow` (in part 1's region): EdgeModel's
+    // seam classes, but tested on the prediction before the size step
+    // (the same point when the rule stops it), and with or without
+    // boundary flags.
     void searchFirstBallOnlyFrom(uint32_t seam) { seam_ = seam; }
     void searchFirstBallOnlyBelow(uint64_t firstPartBelow, int bits) {
         firstPartBelow_ = firstPartBelow;

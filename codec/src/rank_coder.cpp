@@ -200,7 +200,7 @@ uint32_t RankDecoder::get(int extraContext, int boundaryClass) {
 }
 
 bool RankDecoder::getBoundaryFlag(int boundaryClass) {
-    if (!boundary_.decode(coder_, boundaryClass)) return false;
+    if (!boundary_.on() || !boundary_.decode(coder_, boundaryClass)) return false;  // no flags: never a boundary flag
     previousClass_ = rankClass(0);
     return true;
 }

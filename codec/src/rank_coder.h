@@ -148,8 +148,8 @@ public:
     uint32_t get(int extraContext = 0, int boundaryClass = 0);
     // get in two steps, for a caller that works out the rank's context
     // only for an edge that has an apex: with boundary flags, whether the
-    // next edge is a boundary (its rank 0 then read whole); then, if it is
-    // not, or without the flags, its rank.
+    // next edge is a boundary (its rank 0 then read whole; without the
+    // flags, false, reading nothing); then, if it is not, its rank.
     bool getBoundaryFlag(int boundaryClass);
     uint32_t getRank(int extraContext);
     // The gap putStartGap coded; throws Error if it does not fit in 32 bits.
