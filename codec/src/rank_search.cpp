@@ -1,13 +1,12 @@
 #include "rank_search.h"
 
-#include "morton.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "drm/drm.h"
+#include "morton.h"
 #include "spatial_index.h"
 
 namespace drm {
