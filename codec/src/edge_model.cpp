@@ -121,15 +121,10 @@ EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predi
       ranks_(grid, candidates, admissible_),
       frontLever_(formatVersion >= 5 && levers.frontNeighbours),
       boundaryLever_(formatVersion >= kFirstFormatWithBoundaryFlag && levers.boundaryFlag),
-      seamFirstBall_(formatVersion >= kFirstFormatWithSeamFirstBall) {}
-
-// In the first part: both ends from the seam on (the apex, if any, lies
-// below it). In the second: the prediction's grid point comes before the
-// part's first vertex in Morton order, in the first part's region.
-bool EdgeModel::onSeamSide(const OpenEdge& edge, const FixedPoint& prediction) const {
-    if (seam_ != kNoVertex) return edge.vi >= seam_ && edge.vj >= seam_;
-    return secondPart_ && mortonKeyOfPrediction(prediction, bits_) < firstPartBelow_;
+      seamFirstBall_(formatVersion >= kFirstFormatWithSeamFirstBall) {
+    seamSide_.bits = bits;
 }
+
 
 int EdgeModel::contextCount() const {
     if (!levers_.confidenceContext) return 1;
@@ -148,7 +143,7 @@ const EdgeForecast& EdgeModel::forecastBoundary(const OpenEdge& edge) {
     ends = FanEnds();
     if (levers_.gapClosing || frontLever_ || boundaryLever_) ends = fanEnds(edge, admissible_.traversal());
     f.boundaryClass = boundaryLever_ ? boundaryClass(predictor_.firstAheadAttempt(), ends) : -1;
-    if (boundaryLever_ && onSeamSide(edge, f.prediction))
+    if (boundaryLever_ && seamSide_.contains(edge, f.prediction))
         f.boundaryClass = kSeamBoundaryClass + int(ends.boundaryAtI) + int(ends.boundaryAtJ);
     f.preferred = kNoVertex;
     f.context = 0;

@@ -34,6 +34,9 @@ public:
     EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature, const Levers& levers,
               uint64_t faceCount, const SpatialIndex& candidates, const Traversal& traversal,
               int formatVersion = kFileFormatVersion);
+    // The predictor points at this model's seam side: not copied.
+    EdgeModel(const EdgeModel&) = delete;
+    EdgeModel& operator=(const EdgeModel&) = delete;
 
     // How many coder contexts forecasts use (for the rank coder).
     int contextCount() const;
@@ -63,8 +66,8 @@ public:
     // (connectivity_parts.h). Before the first forecast.
     void setSeam(uint32_t first) {
         admissible_.setSeam(first);
-        seam_ = first;
-        if (seamFirstBall_) predictor_.searchFirstBallOnlyFrom(first);
+        seamSide_.seam = first;
+        if (seamFirstBall_) predictor_.searchFirstBallOnlyOn(&seamSide_);
     }
     // Format 11: this model ranks the second part, whose first vertex has
     // Morton key `key`: an edge whose prediction lies at a grid point of
@@ -72,9 +75,9 @@ public:
     // (its boundary flag then has a class of its own). Before the first
     // forecast.
     void setFirstPartBelowKey(uint64_t key) {
-        firstPartBelow_ = key;
-        secondPart_ = true;
-        if (seamFirstBall_) predictor_.searchFirstBallOnlyBelow(key, bits_);
+        seamSide_.firstPartBelow = key;
+        seamSide_.secondPart = true;
+        if (seamFirstBall_) predictor_.searchFirstBallOnlyOn(&seamSide_);
     }
     // Tells the model the apex of the last forecast edge, once known, so it
     // can learn which candidate order serves this mesh. After rankOf or
@@ -102,7 +105,6 @@ private:
     // Format 5: the front order's list for the forecast edge, and which
     // list ranks it; learnOrder keeps score after the apex is known.
     void forecastFrontOrder(const OpenEdge& edge, const FanEnds& ends);
-    FanEnds forecastEnds_;  // forecastBoundary's, for forecastRank
     void learnOrder(uint32_t apex, const OpenEdge& edge);
     void findExtras();
 
@@ -115,6 +117,7 @@ private:
     ApexPredictor predictor_;
     RankSearch ranks_;
     EdgeForecast forecast_;
+    FanEnds forecastEnds_;  // forecastBoundary's, for forecastRank
     std::vector<RankedVertex> byAngle_;  // scratch: the nearest in angle order
     // Rank-1 disagreements between distance and angle order: who was right.
     struct Disagreement {
@@ -126,12 +129,10 @@ private:
     bool frontLever_;
     // Format 10, boundary flags (docs/format.md, "Format 10").
     bool boundaryLever_;
-    // Format 11's parts: the seam's side, for the boundary flag's class.
-    uint32_t seam_ = kNoVertex;
-    bool secondPart_ = false;
+    // Format 11's parts: the seam's side, for the boundary flag's class
+    // and (format 12) the size step; the predictor points at it.
+    SeamSide seamSide_;
     bool seamFirstBall_;  // format 12: the size step stops at the first ball on the seam's side
-    uint64_t firstPartBelow_ = 0;
-    bool onSeamSide(const OpenEdge& edge, const FixedPoint& prediction) const;
     // The forecast's list (nearest) holds the order used: the plain one,
     // or the front order (its first, extra_, the rest); otherOrder_ then
     // holds the plain one.

@@ -22,7 +22,7 @@ constexpr int kFirstFormatWithBoundaryFlag = 10;
 // (connectivity_parts.h).
 constexpr int kFirstFormatWithTwoParts = 11;
 // From 12 the size step of an edge on a part's seam side searches its
-// first ball only (ApexPredictor::searchFirstBallOnlyFrom / Below).
+// first ball only (ApexPredictor::searchFirstBallOnlyOn, seam_side.h).
 constexpr int kFirstFormatWithSeamFirstBall = 12;
 
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};

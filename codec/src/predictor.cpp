@@ -115,14 +115,10 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
             firstAheadAttempt_ = attempt;
             return mid + (p - mid) * (found.height / height);
         }
-        if (attempt == 0 && onSeamSide(p, edge)) return p;  // format 12
+        if (attempt == 0 && firstBallOnly_ && firstBallOnly_->contains(edge, snapPrediction(p, firstBallOnly_->bits)))
+            return p;  // format 12
     }
     return p;
-}
-
-bool ApexPredictor::onSeamSide(Vec3 p, const OpenEdge& edge) const {
-    if (seam_ != kNoVertex) return edge.vi >= seam_ && edge.vj >= seam_;
-    return firstPartBelow_ != 0 && mortonKeyOfPrediction(snapPrediction(p, bits_), bits_) < firstPartBelow_;
 }
 
 // The ball's vertices, listed: the box of cells around the ball holds a few

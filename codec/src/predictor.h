@@ -18,6 +18,7 @@
 #include "drm/drm.h"
 #include "exact_math.h"
 #include "admissibility.h"
+#include "seam_side.h"
 #include "traversal.h"
 
 namespace drm {
@@ -74,19 +75,11 @@ public:
     // of balls of up to 8 times the first's radius: with both halves of
     // the forecast (EdgeModel::forecastBoundary), bunny's decoding took
     // 6.4 % more instructions in two parts than in one, 2.0 % without them.
-    // The seam's side: in part 1 (searchFirstBallOnlyFrom), an edge whose
-    // two ends are both >= seam (no such vertex may close it); in part 2
-    // (searchFirstBallOnlyBelow), whose index holds no vertex of part 1, a
-    // prediction whose grid point, on a grid of `bits` bits per axis, has
-    // a Morton key below `firstPartBelow` (in part 1's region): EdgeModel's
-    // seam classes, but tested on the prediction before the size step
-    // (the same point when the rule stops it), and with or without
-    // boundary flags.
-    void searchFirstBallOnlyFrom(uint32_t seam) { seam_ = seam; }
-    void searchFirstBallOnlyBelow(uint64_t firstPartBelow, int bits) {
-        firstPartBelow_ = firstPartBelow;
-        bits_ = bits;
-    }
+    // The seam's side is `side`'s (EdgeModel's seam classes), tested on
+    // the prediction before the size step (the same point when the rule
+    // stops it), with or without boundary flags; `side` must outlive the
+    // predictor's use (null: every ball is searched).
+    void searchFirstBallOnlyOn(const SeamSide* side) { firstBallOnly_ = side; }
 
 private:
     // A run of vertices the index handed over: their coordinates where the
@@ -99,7 +92,6 @@ private:
     };
     Vec3 bendOntoSurface(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
     Vec3 scaleToFirstVertexAhead(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
-    bool onSeamSide(Vec3 prediction, const OpenEdge& edge) const;  // format 12's rule, above
     // The slab ahead of an edge: its midpoint, the edge (b - a), the unit
     // direction ahead, the edge's length, and how far along the edge the
     // slab reaches either side of the midpoint.
@@ -126,9 +118,7 @@ private:
     std::vector<uint32_t> nearby_;  // scratch, reused by every query
     bool searchedBall_ = false;
     int firstAheadAttempt_ = -1;
-    uint64_t firstPartBelow_ = 0;  // searchFirstBallOnlyBelow's key; 0: every ball is searched
-    uint32_t seam_ = kNoVertex;    // searchFirstBallOnlyFrom's vertex
-    int bits_ = 0;
+    const SeamSide* firstBallOnly_ = nullptr;  // searchFirstBallOnlyOn's
     // The last search's ball: its vertices in the runs the index handed
     // over first, listed (the first inBallCount_ entries of inBall_; the
     // rest is room), until the runs held more than kListUpToPoints

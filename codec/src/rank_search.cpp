@@ -6,7 +6,6 @@
 #include <string>
 
 #include "drm/drm.h"
-#include "morton.h"
 #include "spatial_index.h"
 
 namespace drm {
@@ -29,12 +28,6 @@ Vec3 toGridUnits(const FixedPoint& p) {  // for collectNear, which takes a super
 }  // namespace
 
 FixedPoint snapPrediction(Vec3 p, int bits) { return {snapAxis(p.x, bits), snapAxis(p.y, bits), snapAxis(p.z, bits)}; }
-
-uint64_t mortonKeyOfPrediction(const FixedPoint& prediction, int bits) {
-    const int64_t top = (int64_t(1) << bits) - 1;
-    auto gridOf = [&](int64_t c) { return uint64_t(std::min(std::max<int64_t>(c >> kSubUnitBits, 0), top)); };
-    return mortonKey(gridOf(prediction.x), gridOf(prediction.y), gridOf(prediction.z));
-}
 
 RankSearch::RankSearch(const std::vector<int32_t>& grid, const SpatialIndex& candidates,
                        const Admissibility& admissible)

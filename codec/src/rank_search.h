@@ -23,10 +23,6 @@ namespace drm {
 // The prediction on the fixed-point grid, clamped well outside the model's
 // box so that squared distances cannot overflow.
 FixedPoint snapPrediction(Vec3 prediction, int bits);
-// The Morton key of the grid point nearest a snapped prediction, clamped to
-// the grid of `bits` bits per axis (format 11's parts: which part's region
-// a prediction lies in).
-uint64_t mortonKeyOfPrediction(const FixedPoint& prediction, int bits);
 
 class RankSearch {
 public:

@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "morton.h"
 #include "predictor.h"
 #include "rank_search.h"
 #include "traversal.h"
@@ -246,14 +247,18 @@ TEST(Predictor, SeamSideStopsAtTheFirstBallInPartOne) {
     EXPECT_NEAR(everyBall.predict(mesh.edge).y, 20.0, 1e-9);
     EXPECT_EQ(everyBall.firstAheadAttempt(), 2);
     // Part 1 with the seam at vertex 0: the edge's two ends are past it.
+    SeamSide fromZero;
+    fromZero.seam = 0;
     ApexPredictor seamSide(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
-    seamSide.searchFirstBallOnlyFrom(0);
+    seamSide.searchFirstBallOnlyOn(&fromZero);
     expectNear(seamSide.predict(mesh.edge), mesh.unscaled);
     EXPECT_EQ(seamSide.firstAheadAttempt(), -1);
     EXPECT_TRUE(seamSide.searchedBall());
     // Seam at vertex 1: end 0 lies before it, so the edge is not on the seam's side.
+    SeamSide fromOne;
+    fromOne.seam = 1;
     ApexPredictor before(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
-    before.searchFirstBallOnlyFrom(1);
+    before.searchFirstBallOnlyOn(&fromOne);
     EXPECT_NEAR(before.predict(mesh.edge).y, 20.0, 1e-9);
     EXPECT_EQ(before.firstAheadAttempt(), 2);
 }
@@ -261,13 +266,21 @@ TEST(Predictor, SeamSideStopsAtTheFirstBallInPartOne) {
 TEST(Predictor, SeamSideStopsAtTheFirstBallInPartTwo) {
     FarAhead mesh;
     // The prediction's grid point, as EdgeModel snaps it for the seam classes.
-    const uint64_t key = mortonKeyOfPrediction(snapPrediction(mesh.unscaled, 12), 12);
+    const FixedPoint snapped = snapPrediction(mesh.unscaled, 12);
+    const uint64_t key = mortonKey(uint64_t(snapped.x >> kSubUnitBits), uint64_t(snapped.y >> kSubUnitBits),
+                                   uint64_t(snapped.z >> kSubUnitBits));
+    SeamSide pastIt;  // part 2 begins past the prediction: it lies in part 1's region
+    pastIt.secondPart = true;
+    pastIt.firstPartBelow = key + 1;
+    pastIt.bits = 12;
     ApexPredictor inPartOne(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
-    inPartOne.searchFirstBallOnlyBelow(key + 1, 12);  // part 2 begins past the prediction: it lies in part 1's region
+    inPartOne.searchFirstBallOnlyOn(&pastIt);
     expectNear(inPartOne.predict(mesh.edge), mesh.unscaled);
     EXPECT_EQ(inPartOne.firstAheadAttempt(), -1);
+    SeamSide atIt = pastIt;  // part 2 begins at it
+    atIt.firstPartBelow = key;
     ApexPredictor inPartTwo(Predictor::Midpoint, false, mesh.grid, *mesh.index, mesh.admissible);
-    inPartTwo.searchFirstBallOnlyBelow(key, 12);  // part 2 begins at it
+    inPartTwo.searchFirstBallOnlyOn(&atIt);
     EXPECT_NEAR(inPartTwo.predict(mesh.edge).y, 20.0, 1e-9);
     EXPECT_EQ(inPartTwo.firstAheadAttempt(), 2);
 }
