@@ -295,6 +295,47 @@ TEST(RankCoder, BoundaryFlagGarbageDecodesOrThrowsCorrupt) {
     EXPECT_GT(threw, 0);
 }
 
+// The decoder's two steps (getBoundaryFlag, then getRank unless the edge
+// is a boundary) read what get() reads, ranks and refusals alike, on
+// streams as written and on garbage.
+TEST(RankCoder, TwoStepsReadWhatGetReads) {
+    std::mt19937 rng(37);
+    auto read = [](drm::RankDecoder& d, bool twoSteps, int context, int boundaryClass) {
+        if (!twoSteps) return d.get(context, boundaryClass);
+        return d.getBoundaryFlag(boundaryClass) ? 0u : d.getRank(context);
+    };
+    int threw = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        std::vector<uint8_t> bytes;
+        if (trial % 2 == 0) {
+            std::vector<Flagged> ranks;
+            for (int i = 0; i < 500; ++i)
+                ranks.push_back({rng() % 8 == 0 ? 0u : 1 + rng() % 30, int(rng() % 2), int(rng() % uint32_t(drm::kBoundaryClasses))});
+            bytes = encodeFlagged(ranks, 2, true);
+        } else {
+            bytes.resize(rng() % 200);
+            for (uint8_t& b : bytes) b = uint8_t(rng());
+        }
+        std::vector<std::pair<int, int>> contexts(2000);
+        for (auto& c : contexts) c = {int(rng() % 2), int(rng() % uint32_t(drm::kBoundaryClasses))};
+        std::vector<uint32_t> got[2];
+        std::string refused[2];
+        for (int way = 0; way < 2; ++way) {
+            drm::RankDecoder decoder(bytes.data(), bytes.size(), 2, true);
+            try {
+                for (const auto& c : contexts) got[way].push_back(read(decoder, way == 1, c.first, c.second));
+            } catch (const drm::Error& e) {
+                EXPECT_EQ(e.kind(), drm::ErrorKind::Corrupt) << e.what();
+                refused[way] = e.what();
+            }
+        }
+        EXPECT_EQ(got[0], got[1]) << "trial " << trial;
+        EXPECT_EQ(refused[0], refused[1]) << "trial " << trial;
+        threw += refused[1].empty() ? 0 : 1;
+    }
+    EXPECT_GT(threw, 0);
+}
+
 TEST(RankCoder, BadContextsThrow) {
     EXPECT_THROW(drm::RankEncoder(0), drm::Error);
     EXPECT_THROW(drm::RankDecoder(nullptr, 0, 0), drm::Error);
