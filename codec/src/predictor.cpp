@@ -90,10 +90,12 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     const Vec3 offset = rejectFrom(p - mid, e);
     const double height = norm(offset);
     if (height == 0) return p;
-    const Slab slab{mid, e, offset * (1.0 / height), edgeLength, edgeLength * (0.5 + tuning_.slabWidening)};
+    const Slab slab{mid, e, offset * (1.0 / height), edgeLength, edgeLength * (0.5 + tuning_.slabWidening),
+                    {e.x / edgeLength, e.y / edgeLength, e.z / edgeLength}};
 
     double radius = 2.0 * std::max(height, edgeLength);
     searchedBall_ = true;
+    if (wideBallRadius_ < 0) wideBallRadius_ = candidates_.wideBallRadius();
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
         // The index hands over its runs of vertices around the ball (cells
         // of the grid, each in a box): the first are listed (their
@@ -102,15 +104,22 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
         // (forEachInBall).
         runs_.clear();
         ballCentre_ = mid;
+        ballRadius_ = radius;
         ballRadius2_ = radius * radius;
         inBallCount_ = 0;
-        size_t points = 0;
-        candidates_.forEachNear(mid, radius, [&](const uint32_t* ids, const int32_t* at, size_t count, const int32_t* box) {
-            points += count;
-            if (points <= kListUpToPoints) gather(ids, at, count);
-            else runs_.push_back({ids, at, box, count});
-        });
-        const FirstAhead found = runs_.empty() ? firstAheadInBall(slab, edge) : firstAheadByRuns(slab, edge);
+        wideBall_ = radius > wideBallRadius_ && ++wideBalls_ > kWideBallsBefore;
+        FirstAhead found;
+        if (wideBall_) {
+            found = firstAheadInOrder(slab, edge);
+        } else {
+            size_t points = 0;
+            candidates_.forEachNear(mid, radius, [&](const uint32_t* ids, const int32_t* at, size_t count, const int32_t* box) {
+                points += count;
+                if (points <= kListUpToPoints) gather(ids, at, count);
+                else runs_.push_back({ids, at, box, count});
+            });
+            found = runs_.empty() ? firstAheadInBall(slab, edge) : firstAheadByRuns(slab, edge);
+        }
         if (found.vertex != kNoIndex) {
             firstAheadAttempt_ = attempt;
             return mid + (p - mid) * (found.height / height);
@@ -173,26 +182,32 @@ ApexPredictor::FirstAhead ApexPredictor::firstAheadInBall(const Slab& slab, cons
 // (coordinates below 2^26, so errors below 1e-6 units): no vertex that
 // could be first is passed over, and which one is first is decided as in
 // the ball, vertex by vertex.
-ApexPredictor::FirstAhead ApexPredictor::firstAheadByRuns(const Slab& slab, const OpenEdge& edge) const {
-    FirstAhead best = firstAheadInBall(slab, edge);  // the runs listed before the ball was found too full
+double ApexPredictor::lowestAhead(const Slab& slab, const int32_t* box) {
     constexpr double kMargin = 1e-3;
     const double centre[3] = {slab.mid.x, slab.mid.y, slab.mid.z}, towards[3] = {slab.ahead.x, slab.ahead.y, slab.ahead.z},
-                 along[3] = {slab.e.x / slab.edgeLength, slab.e.y / slab.edgeLength, slab.e.z / slab.edgeLength};
+                 along[3] = {slab.along.x, slab.along.y, slab.along.z};
+    double hLo = 0, hHi = 0, alongLo = 0, alongHi = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double lo = double(box[k]) - centre[k], hi = double(box[3 + k]) - centre[k];
+        hLo += std::min(lo * towards[k], hi * towards[k]);
+        hHi += std::max(lo * towards[k], hi * towards[k]);
+        alongLo += std::min(lo * along[k], hi * along[k]);
+        alongHi += std::max(lo * along[k], hi * along[k]);
+    }
+    if (hHi + kMargin <= 0 || alongLo - kMargin > slab.halfWidth || alongHi + kMargin < -slab.halfWidth)
+        return std::numeric_limits<double>::infinity();
+    return hLo - kMargin;
+}
+
+ApexPredictor::FirstAhead ApexPredictor::firstAheadByRuns(const Slab& slab, const OpenEdge& edge) const {
+    FirstAhead best = firstAheadInBall(slab, edge);  // the runs listed before the ball was found too full
     byHeight_.clear();
     size_t lowest = 0;
     for (uint32_t r = 0; r < runs_.size(); ++r) {
-        const int32_t* box = runs_[r].box;
-        double hLo = 0, hHi = 0, alongLo = 0, alongHi = 0;
-        for (int k = 0; k < 3; ++k) {
-            const double lo = double(box[k]) - centre[k], hi = double(box[3 + k]) - centre[k];
-            hLo += std::min(lo * towards[k], hi * towards[k]);
-            hHi += std::max(lo * towards[k], hi * towards[k]);
-            alongLo += std::min(lo * along[k], hi * along[k]);
-            alongHi += std::max(lo * along[k], hi * along[k]);
-        }
-        if (hHi + kMargin <= 0 || alongLo - kMargin > slab.halfWidth || alongHi + kMargin < -slab.halfWidth) continue;
-        if (byHeight_.empty() || hLo - kMargin < byHeight_[lowest].first) lowest = byHeight_.size();
-        byHeight_.emplace_back(hLo - kMargin, r);
+        const double low = lowestAhead(slab, runs_[r].box);
+        if (low == std::numeric_limits<double>::infinity()) continue;
+        if (byHeight_.empty() || low < byHeight_[lowest].first) lowest = byHeight_.size();
+        byHeight_.emplace_back(low, r);
     }
     if (!byHeight_.empty()) std::swap(byHeight_[0], byHeight_[lowest]);
     for (const std::pair<double, uint32_t>& low : byHeight_) {
@@ -204,6 +219,22 @@ ApexPredictor::FirstAhead ApexPredictor::firstAheadByRuns(const Slab& slab, cons
             offerAhead(slab, run.ids[i], q, norm2(x) <= ballRadius2_, edge, best);
         }
     }
+    return best;
+}
+
+// The same vertex through the index's hierarchy (wide balls): groups of
+// cells behind the edge, beside the slab or above the best so far are
+// passed over whole, the lowest opened first.
+ApexPredictor::FirstAhead ApexPredictor::firstAheadInOrder(const Slab& slab, const OpenEdge& edge) const {
+    FirstAhead best;
+    candidates_.forEachNearInOrder(
+        ballCentre_, ballRadius_, [&](const int32_t* box) { return lowestAhead(slab, box); }, [&] { return best.height; },
+        [&](const uint32_t* ids, const int32_t* q, size_t count, const int32_t*) {
+            for (size_t i = 0; i < count; ++i, q += 3) {
+                const Vec3 x = Vec3{double(q[0]), double(q[1]), double(q[2])} - ballCentre_;
+                offerAhead(slab, ids[i], q, norm2(x) <= ballRadius2_, edge, best);
+            }
+        });
     return best;
 }
 

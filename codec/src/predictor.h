@@ -19,11 +19,10 @@
 #include "exact_math.h"
 #include "admissibility.h"
 #include "seam_side.h"
+#include "spatial_index.h"
 #include "traversal.h"
 
 namespace drm {
-
-class SpatialIndex;
 
 // The base predictors alone, from the edge (a, b) and the opposite vertex o
 // of the rebuilt triangle (a, b, o). Grid units.
@@ -93,11 +92,13 @@ private:
     Vec3 bendOntoSurface(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
     Vec3 scaleToFirstVertexAhead(Vec3 prediction, Vec3 a, Vec3 b, const OpenEdge& edge);
     // The slab ahead of an edge: its midpoint, the edge (b - a), the unit
-    // direction ahead, the edge's length, and how far along the edge the
-    // slab reaches either side of the midpoint.
+    // direction ahead, the edge's length, how far along the edge the slab
+    // reaches either side of the midpoint, and the unit edge (for bounds
+    // over boxes; a vertex's place along the edge is dot(x, e) / edgeLength).
     struct Slab {
         Vec3 mid, e, ahead;
         double edgeLength, halfWidth;
+        Vec3 along;
     };
     struct FirstAhead {
         double height = std::numeric_limits<double>::infinity();
@@ -108,6 +109,10 @@ private:
                     FirstAhead& best) const;
     FirstAhead firstAheadInBall(const Slab& slab, const OpenEdge& edge) const;
     FirstAhead firstAheadByRuns(const Slab& slab, const OpenEdge& edge) const;
+    FirstAhead firstAheadInOrder(const Slab& slab, const OpenEdge& edge) const;
+    // A bound below the height of any vertex of box in the slab, or
+    // +infinity if none of them can be in it.
+    static double lowestAhead(const Slab& slab, const int32_t* box);
 
     Predictor kind_;
     bool curvature_;
@@ -137,14 +142,54 @@ private:
     std::vector<Run> runs_;
     static constexpr size_t kListUpToPoints = 64;
     Vec3 ballCentre_;
-    double ballRadius2_ = 0;
+    double ballRadius_ = 0, ballRadius2_ = 0;
+    // The last ball was searched through the index's hierarchy
+    // (SpatialIndex::forEachNearInOrder), and nothing of it is listed.
+    bool wideBall_ = false;
+    // Balls wider than this go to the hierarchy (SpatialIndex::
+    // wideBallRadius; -1 until asked), once more than kWideBallsBefore of
+    // them were searched: the index builds its hierarchy on first use, which
+    // a mesh with a handful of wide balls (a scan: bunny has 2) would not
+    // repay.
+    double wideBallRadius_ = -1;
+    uint64_t wideBalls_ = 0;
+    static constexpr uint64_t kWideBallsBefore = 64;
     // Scratch: runs by how near they may come (a height or a distance).
     mutable std::vector<std::pair<double, uint32_t>> byHeight_;
     mutable std::vector<std::pair<int64_t, uint32_t>> byDistance_;
 };
 
+// The squared fixed-point distance from p to the nearest point of box
+// (grid units: lowest x, y, z, then highest), exactly.
+inline int64_t boxDistance2(const FixedPoint& p, const int32_t* box) {
+    int64_t d2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        const int64_t c = k == 0 ? p.x : k == 1 ? p.y : p.z;
+        const int64_t lo = int64_t(box[k]) * kSubUnits, hi = int64_t(box[3 + k]) * kSubUnits;
+        const int64_t gap = std::max<int64_t>(lo - c, 0) + std::max<int64_t>(c - hi, 0);
+        d2 += gap * gap;
+    }
+    return d2;
+}
+
 template <class Visit, class Bound>
 void ApexPredictor::forEachInBall(const FixedPoint& p, Bound bound, Visit visit) const {
+    if (wideBall_) {
+        // The index's hierarchy again, nearest boxes first, passing over
+        // those beyond the bound.
+        candidates_.forEachNearInOrder(
+            ballCentre_, ballRadius_, [&](const int32_t* box) { return double(boxDistance2(p, box)); },
+            // Rounding to double is monotonic, so a box passed over lies
+            // beyond the bound in integers too.
+            [&] { return double(bound()); },
+            [&](const uint32_t* ids, const int32_t* at, size_t count, const int32_t*) {
+                for (size_t i = 0; i < count; ++i, at += 3) {
+                    const Vec3 x = Vec3{double(at[0]), double(at[1]), double(at[2])} - ballCentre_;
+                    if (norm2(x) <= ballRadius2_) visit(ids[i], at);
+                }
+            });
+        return;
+    }
     for (size_t i = 0; i < inBallCount_; ++i) visit(inBall_[i].id, inBall_[i].point);
     if (runs_.empty()) return;
     // Each run's nearest possible point, exactly (the box's gap to p per
@@ -154,14 +199,7 @@ void ApexPredictor::forEachInBall(const FixedPoint& p, Bound bound, Visit visit)
     byDistance_.clear();
     size_t nearest = 0;
     for (uint32_t r = 0; r < runs_.size(); ++r) {
-        const int32_t* box = runs_[r].box;
-        int64_t d2 = 0;
-        for (int k = 0; k < 3; ++k) {
-            const int64_t c = k == 0 ? p.x : k == 1 ? p.y : p.z;
-            const int64_t lo = int64_t(box[k]) * kSubUnits, hi = int64_t(box[3 + k]) * kSubUnits;
-            const int64_t gap = std::max<int64_t>(lo - c, 0) + std::max<int64_t>(c - hi, 0);
-            d2 += gap * gap;
-        }
+        const int64_t d2 = boxDistance2(p, runs_[r].box);
         if (d2 < (byDistance_.empty() ? INT64_MAX : byDistance_[nearest].first)) nearest = byDistance_.size();
         byDistance_.emplace_back(d2, r);
     }

@@ -1,6 +1,7 @@
 #include "spatial_index.h"
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 #include "all_nearest.h"
@@ -27,6 +28,14 @@ size_t SpatialIndex::nthNearest(const FixedPoint& p, size_t count, VertexFilter 
     return list.size();
 }
 
+void SpatialIndex::forEachNearInOrder(Vec3 q, double radius, BoxBound lowest, KeyLimit limit,
+                                      PointRunVisitor visit) const {
+    forEachNear(q, radius, [&](const uint32_t* ids, const int32_t* points, size_t count, const int32_t* box) {
+        const double key = lowest(box);  // +infinity: never
+        if (key < std::numeric_limits<double>::infinity() && key <= limit()) visit(ids, points, count, box);
+    });
+}
+
 namespace {
 
 // The grid of cells. Nearest searches walk rings of cells outwards until
@@ -44,6 +53,11 @@ public:
     void forEachNear(Vec3 q, double radius, PointRunVisitor visit) const override {
         cells().forEachNear(q, radius, visit);
     }
+    void forEachNearInOrder(Vec3 q, double radius, BoxBound lowest, KeyLimit limit,
+                            PointRunVisitor visit) const override {
+        cells().forEachNearInOrder(q, radius, lowest, limit, visit);
+    }
+    double wideBallRadius() const override { return cells().wideBallRadius(); }
     void nearest(const FixedPoint& p, size_t count, VertexFilter accept, std::vector<RankedVertex>& out) const override;
     size_t nthNearest(const FixedPoint& p, size_t count, VertexFilter accept, RankedVertex& out) const override;
     void nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,

@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -73,6 +74,12 @@ using VertexFilter = CallbackRef<bool(uint32_t)>;
 // that cannot hold what it looks for.
 using PointRunVisitor =
     CallbackRef<void(const uint32_t* ids, const int32_t* points, size_t count, const int32_t* box)>;
+// For a caller after the best vertex by some key: a lower bound of the key
+// of any vertex in a box (grid units, as a run's) that it could take, or
+// +infinity when it could take none; and the key beyond which it takes
+// nothing (it may fall as the caller goes).
+using BoxBound = CallbackRef<double(const int32_t* box)>;
+using KeyLimit = CallbackRef<double()>;
 
 class SpatialIndex {
 public:
@@ -94,6 +101,20 @@ public:
     // around it. The runs and boxes stay valid until the next remove() or
     // forEachNear().
     virtual void forEachNear(Vec3 q, double radius, PointRunVisitor visit) const = 0;
+    // The same vertices for a caller after the best vertex by some key
+    // that it can bound below over a box (the size correction's first
+    // vertex ahead, the nearest candidates in its ball): a run, or a group
+    // of runs, whose lowest(box) lies above limit() when it comes to be
+    // handed over or opened is passed over whole; lower bounds go first
+    // where the index can order them. A caller that takes the best of the
+    // vertices it is handed gets the answer it would get from forEachNear.
+    // By default forEachNear's runs, each tested.
+    virtual void forEachNearInOrder(Vec3 q, double radius, BoxBound lowest, KeyLimit limit,
+                                    PointRunVisitor visit) const;
+    // The radius beyond which forEachNearInOrder is the faster way to
+    // search a ball (the grid's: balls many cells across, which it searches
+    // through a hierarchy of boxes; by default none).
+    virtual double wideBallRadius() const { return std::numeric_limits<double>::infinity(); }
 
     // The `count` present vertices nearest p that accept takes, exactly:
     // (fixedDistance2, vertex) in increasing order (ties by index); fewer

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common.h"
+#include "morton.h"
 
 namespace drm {
 namespace {
@@ -169,6 +170,66 @@ void VertexIndex::remove(uint32_t v) {
     presentSlot_[moved] = at;
     present_.pop_back();
     presentSlot_[v] = kNotPresent;
+    if (!nodes_.empty())
+        for (uint32_t node = leafOfCell_[c]; node != kNoIndex; node = nodes_[node].parent) --nodes_[node].present;
+}
+
+void VertexIndex::buildHierarchy() const {
+    // Each cell by its coordinates' Morton key (coordinates cut to 21
+    // bits: only the order's locality depends on it), ties by cell.
+    const int cut = std::max(0, bitLength(uint64_t(lastCell_)) - 21);
+    std::vector<std::pair<uint64_t, uint32_t>> keyed(cellStart_.size());
+    for (size_t column = 0; column + 1 < columnCells_.size(); ++column) {
+        const uint64_t key = columnKeys_[column];
+        const uint64_t x = (key >> 32) >> cut, y = (key & 0xFFFFFFFFu) >> cut;
+        for (uint32_t c = columnCells_[column]; c < columnCells_[column + 1]; ++c)
+            keyed[c] = {mortonKey(x, y, uint64_t(cellZ_[c]) >> cut), c};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    hierarchyCells_.resize(keyed.size());
+    for (size_t i = 0; i < keyed.size(); ++i) hierarchyCells_[i] = keyed[i].second;
+    nodes_.reserve(2 * (keyed.size() / kLeafCells + 1));
+    leafOfCell_.assign(keyed.size(), kNoIndex);
+    buildNode(0, keyed.size(), kNoIndex);
+}
+
+uint32_t VertexIndex::buildNode(size_t begin, size_t end, uint32_t parent) const {
+    const uint32_t self = uint32_t(nodes_.size());
+    nodes_.push_back(Node());
+    Node node;
+    node.parent = parent;
+    node.second = kNoIndex;
+    node.cellsBegin = uint32_t(begin);
+    node.cellsEnd = uint32_t(end);
+    if (end - begin <= kLeafCells) {
+        for (int k = 0; k < 3; ++k) {
+            node.box[k] = INT32_MAX;
+            node.box[3 + k] = INT32_MIN;
+        }
+        node.present = 0;
+        for (size_t i = begin; i < end; ++i) {
+            const uint32_t c = hierarchyCells_[i];
+            const int32_t* box = cellBoxes_.data() + 6 * size_t(c);
+            for (int k = 0; k < 3; ++k) {
+                node.box[k] = std::min(node.box[k], box[k]);
+                node.box[3 + k] = std::max(node.box[3 + k], box[3 + k]);
+            }
+            node.present += cellPresent_[c];
+            leafOfCell_[c] = self;
+        }
+    } else {
+        const size_t middle = begin + (end - begin) / 2;
+        const uint32_t first = buildNode(begin, middle, self);
+        node.second = buildNode(middle, end, self);
+        const Node &a = nodes_[first], &b = nodes_[node.second];
+        for (int k = 0; k < 3; ++k) {
+            node.box[k] = std::min(a.box[k], b.box[k]);
+            node.box[3 + k] = std::max(a.box[3 + k], b.box[3 + k]);
+        }
+        node.present = a.present + b.present;
+    }
+    nodes_[self] = node;
+    return self;
 }
 
 void VertexIndex::collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const {

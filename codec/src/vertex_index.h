@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "common.h"
@@ -49,6 +50,16 @@ public:
     void forEachNear(Vec3 q, double radius, Visit visit) const;
     // The same vertices, appended to out (cleared first).
     void collectNear(Vec3 q, double radius, std::vector<uint32_t>& out) const;
+    // The same vertices, cell by cell, for a caller after the best vertex
+    // by some key (SpatialIndex::forEachNearInOrder): groups of cells from
+    // the widest down, the lowest bound opened first, each passed over whole
+    // if lowest(box) lies above limit() by then. For balls many cells
+    // across (wideBallRadius), where visiting every cell of the box around the
+    // ball is most of the cost: on CAD meshes a long edge's ball holds
+    // thousands of vertices, of which a few cells matter.
+    template <class Lowest, class Limit, class Visit>
+    void forEachNearInOrder(Vec3 q, double radius, Lowest lowest, Limit limit, Visit visit) const;
+    double wideBallRadius() const { return double(kWideBallCells * cellWidth_); }
 
     // Rings of cells around a fixed-point location, for exact nearest
     // searches: ring r holds the cells at Chebyshev cell distance r from the
@@ -130,6 +141,31 @@ private:
                       size_t(cellPresent_[c]), box);
         }
     }
+
+    // A ball more than this many cells in radius is searched through the
+    // hierarchy (forEachNearInOrder).
+    static constexpr int64_t kWideBallCells = 6;
+    // forEachNearInOrder's hierarchy: a binary tree of boxes over the cells
+    // taken in Morton order of their coordinates (hierarchyCells_), halved
+    // down to kLeafCells cells or fewer, in preorder (a node's first child
+    // follows it), each node with the count of present vertices under it,
+    // so that culled regions are passed over whole. Made when first asked
+    // for (only meshes with long edges ask), then kept up to date by
+    // remove().
+    static constexpr size_t kLeafCells = 8;
+    struct Node {
+        int32_t box[6];       // as cellBoxes_, around every cell under the node
+        uint32_t present;     // present vertices under the node
+        uint32_t second;      // the second child; a leaf: kNoIndex
+        uint32_t cellsBegin;  // a leaf's cells: hierarchyCells_[cellsBegin, cellsEnd)
+        uint32_t cellsEnd;
+        uint32_t parent;      // kNoIndex at the root
+    };
+    void buildHierarchy() const;
+    uint32_t buildNode(size_t begin, size_t end, uint32_t parent) const;
+    mutable std::vector<Node> nodes_;
+    mutable std::vector<uint32_t> hierarchyCells_, leafOfCell_;
+    mutable std::vector<std::pair<uint32_t, double>> nodeStack_;
 
     int shift_ = 0;         // a cell is 2^shift grid units wide
     int64_t cellWidth_ = 1;
@@ -220,6 +256,56 @@ void VertexIndex::forEachNear(Vec3 q, double radius, Visit visit) const {
     const int64_t bound = int64_t(std::ceil(reach * kSubUnits)) + 1;
     for (int64_t x = lo[0]; x <= hi[0]; ++x)
         for (int64_t y = lo[1]; y <= hi[1]; ++y) forEachCellOfColumn(p, x, y, lo[2], hi[2], false, bound * bound, visit);
+}
+
+template <class Lowest, class Limit, class Visit>
+void VertexIndex::forEachNearInOrder(Vec3 q, double radius, Lowest lowest, Limit limit, Visit visit) const {
+    if (present_.empty()) return;
+    if (nodes_.empty()) buildHierarchy();
+    // As forEachNear: one unit wider than the ball, so that float rounding
+    // of q and radius cannot drop a vertex on its surface.
+    const double reach = radius + 1.0, reach2 = reach * reach;
+    const double at[3] = {q.x, q.y, q.z};
+    auto inReach = [&](const int32_t* box) {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double gap = std::max(double(box[k]) - at[k], 0.0) + std::max(at[k] - double(box[3 + k]), 0.0);
+            d2 += gap * gap;
+        }
+        return d2 <= reach2;  // NaN: false
+    };
+    // Whether a box's bound lets it be opened (+infinity never does).
+    constexpr double kNever = std::numeric_limits<double>::infinity();
+    auto open = [&](double key) { return key < kNever && key <= limit(); };
+    // A node's bound, or +infinity if it holds nothing in reach.
+    auto bound = [&](const Node& node) { return node.present != 0 && inReach(node.box) ? lowest(node.box) : kNever; };
+    std::vector<std::pair<uint32_t, double>>& stack = nodeStack_;
+    stack.clear();
+    stack.emplace_back(0, bound(nodes_[0]));
+    while (!stack.empty()) {
+        const uint32_t n = stack.back().first;
+        const double key = stack.back().second;
+        stack.pop_back();
+        if (!open(key)) continue;
+        const Node& node = nodes_[n];
+        if (node.second == kNoIndex) {
+            for (uint32_t i = node.cellsBegin; i < node.cellsEnd; ++i) {
+                const uint32_t c = hierarchyCells_[i];
+                const int32_t* box = cellBoxes_.data() + 6 * size_t(c);
+                if (cellPresent_[c] != 0 && inReach(box) && open(lowest(box)))
+                    visit(slots_.data() + cellStart_[c], slotPoints_.data() + 3 * size_t(cellStart_[c]),
+                          size_t(cellPresent_[c]), box);
+            }
+            continue;
+        }
+        // The child with the lower bound is opened first: pushed last.
+        const double first = bound(nodes_[n + 1]), second = bound(nodes_[node.second]);
+        const bool secondFirst = second < first;
+        const std::pair<uint32_t, double> later = secondFirst ? std::make_pair(n + 1, first) : std::make_pair(node.second, second);
+        const std::pair<uint32_t, double> sooner = secondFirst ? std::make_pair(node.second, second) : std::make_pair(n + 1, first);
+        if (open(later.second)) stack.push_back(later);
+        if (open(sooner.second)) stack.push_back(sooner);
+    }
 }
 
 template <class Distance, class Accept>

@@ -4,11 +4,13 @@
 // nearest others; the ball searches' superset. Clustered points with many
 // exact ties, coincident points, a far outlier, and coordinates beyond
 // float's 24 bits (FLANN's float distances then round even on the grid
-// points), where only the certified bound keeps FLANN exact.
+// points), where only the certified bound keeps FLANN exact; the ordered
+// search of a ball (the grid through its hierarchy of cells).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 #include <set>
@@ -258,6 +260,87 @@ TEST_P(BothIndexes, CollectNearHoldsEveryPresentVertexInTheBall) {
             });
             ASSERT_EQ(visited.size(), near.size());
             ASSERT_EQ(std::set<uint32_t>(visited.begin(), visited.end()), got);
+        }
+    }
+}
+
+// forEachNearInOrder as its two callers use it: the best vertex of the
+// ball by a key the caller bounds over boxes, with a bound that tightens as
+// it goes. Two keys: the lowest x (ties by index), the shape of the size
+// step's lowest height ahead; and the squared fixed-point distance from a
+// point off the centre, the nearest candidates'. Against brute force over
+// the present vertices, the grid's hierarchy built early and brought up to
+// date as more vertices are removed. Every vertex handed over must be
+// present, and be handed over once.
+TEST_P(BothIndexes, InOrderSearchFindsTheBestOfTheBall) {
+    const int32_t extent = GetParam();
+    std::mt19937 rng(uint32_t(extent) + 5);
+    const std::vector<int32_t> grid = cloud(rng, 2000, extent);
+    const size_t n = grid.size() / 3;
+    constexpr double kNever = std::numeric_limits<double>::infinity();
+    for (NeighbourIndex kind : {NeighbourIndex::Grid, NeighbourIndex::Flann}) {
+        const std::unique_ptr<SpatialIndex> index = makeIndex(grid, kind);
+        SCOPED_TRACE(index->name());
+        std::vector<bool> removed(n, false);
+        std::uniform_real_distribution<double> at(-0.2 * extent, 1.2 * extent), radius(0, 0.8 * extent);
+        for (int round = 0; round < 4; ++round) {
+            for (int q = 0; q < 60; ++q) {
+                const Vec3 c{at(rng), at(rng), at(rng)};
+                const double r = q % 10 == 0 ? 0.0 : radius(rng);
+                auto inBall = [&](uint32_t v) {
+                    const Vec3 d{grid[3 * v] - c.x, grid[3 * v + 1] - c.y, grid[3 * v + 2] - c.z};
+                    return norm2(d) <= r * r;
+                };
+                // Lowest x among the ball's vertices with odd index.
+                std::pair<double, uint32_t> expectedLow{kNever, kNoIndex}, gotLow{kNever, kNoIndex};
+                for (uint32_t v = 0; v < n; ++v)
+                    if (!removed[v] && v % 2 == 1 && inBall(v))
+                        expectedLow = std::min(expectedLow, std::make_pair(double(grid[3 * v]), v));
+                std::set<uint32_t> handed;
+                index->forEachNearInOrder(
+                    c, r, [](const int32_t* box) { return double(box[0]); }, [&] { return gotLow.first; },
+                    [&](const uint32_t* ids, const int32_t* points, size_t count, const int32_t*) {
+                        for (size_t i = 0; i < count; ++i) {
+                            ASSERT_FALSE(removed[ids[i]]) << "removed vertex " << ids[i] << " handed over";
+                            ASSERT_TRUE(handed.insert(ids[i]).second) << "vertex " << ids[i] << " handed over twice";
+                            ASSERT_EQ(points[3 * i], grid[3 * size_t(ids[i])]);
+                            if (ids[i] % 2 == 1 && inBall(ids[i]))
+                                gotLow = std::min(gotLow, std::make_pair(double(points[3 * i]), ids[i]));
+                        }
+                    });
+                ASSERT_EQ(gotLow, expectedLow) << "query " << q << " round " << round;
+                // Nearest to a point a quarter of the radius off the centre.
+                const Vec3 off{c.x + 0.25 * r, c.y, c.z};
+                const FixedPoint p{int64_t(std::floor(off.x * kSubUnits + 0.5)), int64_t(std::floor(off.y * kSubUnits + 0.5)),
+                                   int64_t(std::floor(off.z * kSubUnits + 0.5))};
+                RankedVertex expectedNear{INT64_MAX, kNoIndex}, gotNear{INT64_MAX, kNoIndex};
+                for (uint32_t v = 0; v < n; ++v)
+                    if (!removed[v] && inBall(v)) expectedNear = std::min(expectedNear, {fixedDistance2(grid, p, v), v});
+                index->forEachNearInOrder(
+                    c, r,
+                    [&](const int32_t* box) {
+                        int64_t d2 = 0;
+                        const int64_t pc[3] = {p.x, p.y, p.z};
+                        for (int k = 0; k < 3; ++k) {
+                            const int64_t gap = std::max<int64_t>(int64_t(box[k]) * kSubUnits - pc[k], 0) +
+                                                std::max<int64_t>(pc[k] - int64_t(box[3 + k]) * kSubUnits, 0);
+                            d2 += gap * gap;
+                        }
+                        return double(d2);
+                    },
+                    [&] { return double(gotNear.first); },
+                    [&](const uint32_t* ids, const int32_t*, size_t count, const int32_t*) {
+                        for (size_t i = 0; i < count; ++i)
+                            if (inBall(ids[i])) gotNear = std::min(gotNear, {fixedDistance2(grid, p, ids[i]), ids[i]});
+                    });
+                ASSERT_EQ(gotNear, expectedNear) << "query " << q << " round " << round;
+            }
+            // A quarter of what is left goes; the hierarchy keeps count.
+            for (uint32_t v = uint32_t(round); v < n; v += 4)
+                if (!removed[v] && (v / 4) % 2 == 0) {
+                    index->remove(v);
+                    removed[v] = true;
+                }
         }
     }
 }
