@@ -97,8 +97,10 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
     searchedBall_ = true;
     if (wideBallRadius_ < 0) wideBallRadius_ = candidates_.wideBallRadius();
     for (int attempt = 0; attempt < 4; ++attempt, radius *= 2.0) {
-        // The index hands over its runs of vertices around the ball (cells
-        // of the grid, each in a box): the first are listed (their
+        // A ball many cells across is searched through the index's
+        // hierarchy (firstAheadInOrder), once enough of them were. Any
+        // other: the index hands over its runs of vertices around the ball
+        // (cells of the grid, each in a box), the first listed (their
         // vertices in the ball), those past kListUpToPoints vertices kept
         // as runs. The rank's nearest candidates come from the same ball
         // (forEachInBall).
@@ -107,7 +109,7 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
         ballRadius_ = radius;
         ballRadius2_ = radius * radius;
         inBallCount_ = 0;
-        wideBall_ = radius > wideBallRadius_ && ++wideBalls_ > kWideBallsBefore;
+        wideBall_ = radius > wideBallRadius_ && ++wideBallsSearched_ > kWideBallsBefore;
         FirstAhead found;
         if (wideBall_) {
             found = firstAheadInOrder(slab, edge);
@@ -170,18 +172,12 @@ ApexPredictor::FirstAhead ApexPredictor::firstAheadInBall(const Slab& slab, cons
     return best;
 }
 
-// The same vertex from the runs as they are, for balls too full to list
-// (on CAD meshes long edges make balls of thousands of vertices, of which a
-// few cells matter): the runs listed before the ball was found too full,
-// then the others. A run whose box lies behind the edge or beside the
-// slab holds no vertex ahead, nor does one whose box lies above the best
-// height found so far: the lowest box is looked at first, then the others
-// in turn, each passed over if it lies above the best by then (sorting them
-// all cost more than it spared). The bounds are the heights of the box's
-// corners, less a margin far above the rounding of either side
-// (coordinates below 2^26, so errors below 1e-6 units): no vertex that
-// could be first is passed over, and which one is first is decided as in
-// the ball, vertex by vertex.
+// A bound below the height of the vertices of a box that can be in the
+// slab: the heights of the box's corners, less a margin far above the
+// rounding of either side (coordinates below 2^26, so errors below 1e-6
+// units), or +infinity for a box behind the edge or beside the slab. No
+// vertex that could be first is passed over by it, and which one is first
+// is decided vertex by vertex, as in the ball.
 double ApexPredictor::lowestAhead(const Slab& slab, const int32_t* box) {
     constexpr double kMargin = 1e-3;
     const double centre[3] = {slab.mid.x, slab.mid.y, slab.mid.z}, towards[3] = {slab.ahead.x, slab.ahead.y, slab.ahead.z},
@@ -199,6 +195,13 @@ double ApexPredictor::lowestAhead(const Slab& slab, const int32_t* box) {
     return hLo - kMargin;
 }
 
+// The same vertex from the runs as they are, for balls too full to list
+// (on CAD meshes long edges make balls of thousands of vertices, of which a
+// few cells matter): the runs listed before the ball was found too full,
+// then the others. A run whose box holds no vertex ahead (lowestAhead) or
+// lies above the best height found so far is passed over: the lowest box
+// is looked at first, then the others in turn, each passed over if it lies
+// above the best by then (sorting them all cost more than it spared).
 ApexPredictor::FirstAhead ApexPredictor::firstAheadByRuns(const Slab& slab, const OpenEdge& edge) const {
     FirstAhead best = firstAheadInBall(slab, edge);  // the runs listed before the ball was found too full
     byHeight_.clear();

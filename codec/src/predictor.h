@@ -60,7 +60,9 @@ public:
     // listed whole), then the runs kept beyond them: the one nearest p,
     // then the others in turn, each passed over if its nearest point lies
     // farther from p than bound() (a squared fixed-point distance, asked
-    // before each run) says the caller needs.
+    // before each run) says the caller needs. A wide ball (searched
+    // through the index's hierarchy) is searched there again, as the index
+    // stands, nearest boxes first, passing over those beyond bound().
     template <class Visit, class Bound>
     void forEachInBall(const FixedPoint& p, Bound bound, Visit visit) const;
     // Which of the last predict()'s balls held the first vertex ahead (0:
@@ -152,7 +154,7 @@ private:
     // a mesh with a handful of wide balls (a scan: bunny has 2) would not
     // repay.
     double wideBallRadius_ = -1;
-    uint64_t wideBalls_ = 0;
+    uint64_t wideBallsSearched_ = 0;
     static constexpr uint64_t kWideBallsBefore = 64;
     // Scratch: runs by how near they may come (a height or a distance).
     mutable std::vector<std::pair<double, uint32_t>> byHeight_;

@@ -108,7 +108,9 @@ public:
     // handed over or opened is passed over whole; lower bounds go first
     // where the index can order them. A caller that takes the best of the
     // vertices it is handed gets the answer it would get from forEachNear.
-    // By default forEachNear's runs, each tested.
+    // A box handed to lowest may be a group's, valid during the call only.
+    // By default forEachNear's runs, each tested in turn (FLANN's index:
+    // its wideBallRadius is infinite, so the codec never asks it).
     virtual void forEachNearInOrder(Vec3 q, double radius, BoxBound lowest, KeyLimit limit,
                                     PointRunVisitor visit) const;
     // The radius beyond which forEachNearInOrder is the faster way to

@@ -188,7 +188,9 @@ void VertexIndex::buildHierarchy() const {
     std::sort(keyed.begin(), keyed.end());
     hierarchyCells_.resize(keyed.size());
     for (size_t i = 0; i < keyed.size(); ++i) hierarchyCells_[i] = keyed[i].second;
-    nodes_.reserve(2 * (keyed.size() / kLeafCells + 1));
+    // Halving leaves 4 to 8 cells a leaf (fewer only with fewer cells in all):
+    // at most about half as many nodes as cells.
+    nodes_.reserve(keyed.size() / 2 + 2);
     leafOfCell_.assign(keyed.size(), kNoIndex);
     buildNode(0, keyed.size(), kNoIndex);
 }
@@ -198,7 +200,7 @@ uint32_t VertexIndex::buildNode(size_t begin, size_t end, uint32_t parent) const
     nodes_.push_back(Node());
     Node node;
     node.parent = parent;
-    node.second = kNoIndex;
+    node.secondChild = kNoIndex;
     node.cellsBegin = uint32_t(begin);
     node.cellsEnd = uint32_t(end);
     if (end - begin <= kLeafCells) {
@@ -220,8 +222,8 @@ uint32_t VertexIndex::buildNode(size_t begin, size_t end, uint32_t parent) const
     } else {
         const size_t middle = begin + (end - begin) / 2;
         const uint32_t first = buildNode(begin, middle, self);
-        node.second = buildNode(middle, end, self);
-        const Node &a = nodes_[first], &b = nodes_[node.second];
+        node.secondChild = buildNode(middle, end, self);
+        const Node &a = nodes_[first], &b = nodes_[node.secondChild];
         for (int k = 0; k < 3; ++k) {
             node.box[k] = std::min(a.box[k], b.box[k]);
             node.box[3 + k] = std::max(a.box[3 + k], b.box[3 + k]);

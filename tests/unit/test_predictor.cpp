@@ -100,7 +100,9 @@ TEST(Predictor, CurvatureBendsOntoThePlaneOfTheNearbyVertices) {
 
 // Long edges among dense points make balls of hundreds of vertices, which
 // the predictor searches run by run, passing over runs that cannot hold the
-// answer. The answers must be those of every vertex looked at: the first
+// answer, and (most of these balls are many cells wide: past the first 64,
+// on the grids) through the grid's hierarchy of cells, passing over groups
+// of cells. The answers must be those of every vertex looked at: the first
 // vertex ahead (the scaled prediction, exactly) and, for the rank's nearest
 // candidates, every vertex of the ball within the bound asked for. Checked
 // against a search over every present vertex, on grids of several cell
@@ -195,7 +197,7 @@ void expectFullBallsAsEveryVertexSays(const std::vector<int32_t>& grid,
                 if (bound == INT64_MAX) ASSERT_EQ(visited.size(), ball.size());
             }
         }
-        EXPECT_GT(fullBalls, 100u) << "too few balls over the listing limit: the run-by-run search went untested";
+        EXPECT_GT(fullBalls, 100u) << "too few balls over the listing limit: the searches of full balls went untested";
     }
 }
 

@@ -335,13 +335,100 @@ TEST_P(BothIndexes, InOrderSearchFindsTheBestOfTheBall) {
                     });
                 ASSERT_EQ(gotNear, expectedNear) << "query " << q << " round " << round;
             }
-            // A quarter of what is left goes; the hierarchy keeps count.
+            // An eighth of the vertices goes each round; the hierarchy keeps count.
             for (uint32_t v = uint32_t(round); v < n; v += 4)
                 if (!removed[v] && (v / 4) % 2 == 0) {
                     index->remove(v);
                     removed[v] = true;
                 }
         }
+    }
+}
+
+// What is removed is passed over whole: once half the space is emptied,
+// every box the search asks the caller about holds a present vertex (a
+// hierarchy that did not keep count would open the emptied half), and once
+// everything is gone nothing is asked or handed over. The grid at its own
+// cell size, at cells one unit wide, and as one cell (the hierarchy a
+// single leaf); its hierarchy built before the removals or after them.
+TEST_P(BothIndexes, InOrderSearchPassesOverWhatIsRemoved) {
+    const int32_t extent = GetParam();
+    std::mt19937 rng(uint32_t(extent) + 6);
+    const std::vector<int32_t> grid = cloud(rng, 1500, extent);
+    const size_t n = grid.size() / 3;
+    constexpr double kNever = std::numeric_limits<double>::infinity();
+    struct Variant {
+        NeighbourIndex kind;
+        int cellShift;
+        bool builtBefore;
+    };
+    for (const Variant& variant : {Variant{NeighbourIndex::Grid, -1, true}, Variant{NeighbourIndex::Grid, -1, false},
+                                   Variant{NeighbourIndex::Grid, 0, true}, Variant{NeighbourIndex::Grid, 26, true},
+                                   Variant{NeighbourIndex::Flann, -1, true}}) {
+        const std::unique_ptr<SpatialIndex> index =
+            variant.kind == NeighbourIndex::Flann ? makeFlannIndex(grid) : makeGridIndex(grid, variant.cellShift);
+        SCOPED_TRACE(std::string(index->name()) + " cell shift " + std::to_string(variant.cellShift) +
+                     (variant.builtBefore ? ", built before" : ", built after"));
+        std::vector<bool> removed(n, false);
+        const Vec3 middle{extent / 2.0, extent / 2.0, extent / 2.0};
+        const double everywhere = 2.0 * extent;
+        auto search = [&](const Vec3& c, double r, std::pair<double, uint32_t>& got, size_t& asked, size_t& handed) {
+            got = {kNever, kNoIndex};
+            asked = handed = 0;
+            index->forEachNearInOrder(
+                c, r,
+                [&](const int32_t* box) {
+                    ++asked;
+                    bool holds = false;
+                    for (uint32_t v = 0; v < n && !holds; ++v)
+                        if (!removed[v]) {
+                            const int32_t* at = &grid[3 * size_t(v)];
+                            holds = at[0] >= box[0] && at[1] >= box[1] && at[2] >= box[2] && at[0] <= box[3] &&
+                                    at[1] <= box[4] && at[2] <= box[5];
+                        }
+                    EXPECT_TRUE(holds) << "asked about a box with no present vertex";
+                    return double(box[0]);
+                },
+                [&] { return got.first; },
+                [&](const uint32_t* ids, const int32_t* points, size_t count, const int32_t*) {
+                    for (size_t i = 0; i < count; ++i) {
+                        ++handed;
+                        EXPECT_FALSE(removed[ids[i]]) << "removed vertex " << ids[i] << " handed over";
+                        got = std::min(got, std::make_pair(double(points[3 * i]), ids[i]));
+                    }
+                });
+        };
+        std::pair<double, uint32_t> got;
+        size_t asked = 0, handed = 0;
+        if (variant.builtBefore) search(middle, everywhere, got, asked, handed);
+        // The lower half in x goes, and every third vertex besides.
+        for (uint32_t v = 0; v < n; ++v)
+            if (grid[3 * size_t(v)] < extent / 2 || v % 3 == 0) {
+                index->remove(v);
+                removed[v] = true;
+            }
+        std::uniform_real_distribution<double> at(0, extent), radius(0.1 * extent, 1.5 * extent);
+        for (int q = 0; q < 8; ++q) {
+            const Vec3 c = q == 0 ? middle : Vec3{at(rng), at(rng), at(rng)};
+            const double r = q == 0 ? everywhere : radius(rng);
+            std::pair<double, uint32_t> expected{kNever, kNoIndex};
+            for (uint32_t v = 0; v < n; ++v) {
+                const Vec3 d{grid[3 * v] - c.x, grid[3 * v + 1] - c.y, grid[3 * v + 2] - c.z};
+                if (!removed[v] && norm2(d) <= r * r) expected = std::min(expected, std::make_pair(double(grid[3 * v]), v));
+            }
+            search(c, r, got, asked, handed);
+            // The search hands over vertices beyond the ball too (callers
+            // test): of those inside, it must have the best.
+            if (expected.second != kNoIndex) {
+                ASSERT_LE(got.first, expected.first) << "query " << q;
+            }
+            ASSERT_GE(got.first, double(extent / 2)) << "a vertex of the emptied half";
+        }
+        for (uint32_t v = 0; v < n; ++v) index->remove(v);
+        std::fill(removed.begin(), removed.end(), true);
+        search(middle, everywhere, got, asked, handed);
+        EXPECT_EQ(asked, 0u) << "a box asked about with nothing left";
+        EXPECT_EQ(handed, 0u);
     }
 }
 
