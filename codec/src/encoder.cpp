@@ -873,9 +873,20 @@ EarlyConnectivity encodeBeforeVertexSection(const Mesh& mesh, const PreparedMesh
 // the work.
 constexpr double kRefineMinimumGain = kAutoRefineMinimumGainPercent / 100.0;
 // Meshes this small decode in well under a millisecond either way: refine
-// is kept wherever it is smaller (star-cgal, 14 vertices: 125 bytes with
-// refine against the tree's 128, 2.3 % smaller).
+// is tried and kept wherever it is smaller (star-cgal, 14 vertices: 125
+// bytes with refine against the tree's 128, 2.3 % smaller).
 constexpr size_t kRefineAnyGainBelowVertices = 1000;
+// Below this many vertices, meshes decode in a few milliseconds either
+// way: a refine attempt is made where its estimate promises a 1 % smaller
+// file, and kept wherever it is smaller (mech-holes-shark, 5,246 vertices:
+// 8,605 bytes with refine against the tree's 8,819, 2.4 % smaller, decoded
+// in 34.4 ms of CPU against 32.2, whole process). Until the twenty-fourth
+// session both asked 3 % here too; the tree's neighbour counts then took
+// mech-holes-shark's tree within 3 % of refine, and its file would have
+// grown. An estimate promising any gain at all would make attempts that
+// lose (blobby: encoding twice as long, the same file).
+constexpr size_t kRefineSmallMeshBelowVertices = 8192;
+constexpr double kRefineSmallMeshEstimatedGain = 0.01;
 
 // Where the coarse grid leaves nearest neighbours at most this many coarse
 // steps apart (the spacing the geometry tree measures), the connectivity
@@ -945,7 +956,12 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     if (treeBits <= kAutoRefineAboveBitsPerVertex)
         return encodeWithGeometry(mesh, prepared, cut, tree, 0, progress, nullptr, &section, early);
     const double slack = kRefineEstimateSlack * double(treeGeometry);
-    const double minimumGain = mesh.vertexCount() < kRefineAnyGainBelowVertices ? 0.0 : kRefineMinimumGain;
+    // The gain asked of an estimate before its attempt is made, and of an
+    // attempt made before it is kept.
+    const double minimumGain = mesh.vertexCount() < kRefineAnyGainBelowVertices      ? 0.0
+                               : mesh.vertexCount() < kRefineSmallMeshBelowVertices ? kRefineSmallMeshEstimatedGain
+                                                                                     : kRefineMinimumGain;
+    const double keptGain = mesh.vertexCount() < kRefineSmallMeshBelowVertices ? 0.0 : minimumGain;
     // Refine's estimates (refineGeometryEstimate), one per low-bit count:
     // they need the tree's vertex section only, not its attempt, so they
     // may run beside it.
@@ -1055,7 +1071,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     }
     if (estimating.empty())
         for (Estimate& e : estimates) estimate(e, double(treeTotal));
-    const double worthIt = (1.0 - minimumGain) * double(treeTotal);
+    const double worthIt = (1.0 - keptGain) * double(treeTotal);
     for (Estimate& e : estimates) {
         // The estimate's trees serve its own attempt only: freed after it
         // (the estimates ran together, so each one's are held till here).

@@ -731,8 +731,18 @@ constexpr int kCellBitsWidth = 5;
 namespace {
 
 // How many nearest neighbours of each vertex the encoder's tree may take
-// as its children (joined both ways).
-constexpr int kTreeNeighbours = 4;  // 6 and 8 measured worse on most of the corpus
+// as its children (joined both ways): 4 by default (the corpus's geometry
+// sections in total: 1,715,078 bytes over 4, 1,710,079 over 5, 1,711,209
+// over 6, 1,714,852 over 8, 1,736,935 over 3). The count that codes
+// smallest differs from mesh to mesh (the best of the trees and ways for
+// each count: turbine 8,877 bytes over 4, 7,165 over 8; genus3
+// 9,372 over 4, 8,740 over 2; igea 134,152 over 4, 137,483 over 8; the
+// corpus -1.6 % with the best count of the six for each mesh, -1.3 % with
+// the best of 4, 8 and 2, -1.0 % of 4 and 8): TreeNeighbours::Several and
+// SeveralEveryWay try these, the first of equal sections kept.
+constexpr int kTreeNeighbours = 4;
+constexpr int kTreeNeighbourCountsTried = 3;
+constexpr int kTreeNeighbourCounts[kTreeNeighbourCountsTried] = {kTreeNeighbours, 8, 2};
 // At most this many of a vertex's neighbours are looked at per step. A
 // surface vertex has about 6 to 10; only coincident points make hubs (ties
 // go to the lowest index, so m copies of a point all list the same four,
@@ -973,7 +983,7 @@ constexpr size_t kForestBesideFromVertices = 16384;
 // 20.91).
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
                                     GeometryTree which, ChoiceCoding choices, FrameUse frames,
-                                    GeometryTreeTrials* trials, int threads) {
+                                    GeometryTreeTrials* trials, int threads, TreeNeighbours treeNeighbours) {
     GeometryTreeTrials own;
     if (!trials) trials = &own;
     if (trials->nearest && (trials->vertexCount != grid.size() / 3 || trials->bits != bits))
@@ -986,7 +996,21 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     const NearestNeighbours& nearest = *trials->nearest;
     const int cellBits = cellBitsFor(nearest.spacing, bits);
     GeometryEncoding* best = nullptr;
-    NeighbourGraph graph;
+    // The cheapest-first tree's neighbour counts (kTreeNeighbourCounts, by
+    // index). Every way grows the tree over the 4 nearest. With several
+    // counts, one way also grows it over the others (SeveralEveryWay: the
+    // first way; Several: the way that coded the 4 nearest smallest), and
+    // `chosen` is the count that coded smallest there (< 0: not yet chosen;
+    // an earlier call's choice is kept in the trials). SeveralEveryWay grows
+    // a chosen count other than the 4 nearest under every later way too.
+    const int countsTried = treeNeighbours == TreeNeighbours::Four ? 1 : kTreeNeighbourCountsTried;
+    int chosen = 0;
+    if (countsTried > 1) {
+        chosen = -1;
+        for (int c = 0; c < countsTried; ++c)
+            if (trials->treeNeighbours == kTreeNeighbourCounts[c]) chosen = c;
+    }
+    NeighbourGraph graphs[kTreeNeighbourCountsTried];
     Forest spanning;  // kept for the next trial
     // The ways asked for, in the order tried (see the loop below).
     std::vector<std::pair<bool, bool>> ways;  // (flags, frame)
@@ -1010,19 +1034,21 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     // Codes one way, unless an earlier call did.
     // A section given up on (empty: codeTree) is kept as such, and is never
     // the best; a call that asks for that tree alone codes it again.
-    auto trial = [&](bool cheapestFirst, bool flagChoices, bool frame, auto codeOneWay) {
-        const int key = (cheapestFirst ? 4 : 0) + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
+    auto trial = [&](bool cheapestFirst, int count, bool flagChoices, bool frame, auto codeOneWay) -> size_t {
+        const int key = 8 * count + (cheapestFirst ? 4 : 0) + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
         auto found = trials->coded.find(key);
         if (found != trials->coded.end() && found->second.bytes.empty() && which != GeometryTree::Smaller) {
             trials->coded.erase(found);
             found = trials->coded.end();
         }
         if (found == trials->coded.end()) found = trials->coded.emplace(key, codeOneWay(flagChoices, frame)).first;
-        if (found->second.bytes.empty()) return;
+        if (found->second.bytes.empty()) return SIZE_MAX;
         if (!best || found->second.bytes.size() < best->bytes.size()) best = &found->second;
+        return found->second.bytes.size();
     };
-    auto cheapestFirst = [&](bool flagChoices, bool frame) {
-        if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbours);
+    auto cheapestFirst = [&](int count, bool flagChoices, bool frame) {
+        NeighbourGraph& graph = graphs[count];
+        if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbourCounts[count]);
         CodingLog log;
         // Scans log 11 to 15 words a vertex (igea 12.9, horse 13.9, igea x4
         // 11.3): reserved, the log is not grown by doubling, which held up
@@ -1031,17 +1057,27 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         GeometryEncoding coded;
         GrownTree grown = cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals);
         coded.order = std::move(grown.order);
-        std::vector<float>& vertexBits = trials->vertexBits[(flagChoices ? 2 : 0) + (frame ? 1 : 0)];
+        std::vector<float>& vertexBits = trials->vertexBits[4 * count + (flagChoices ? 2 : 0) + (frame ? 1 : 0)];
         coded.bytes = writeGrownTree(log, cellBits, grown.childCount, coded.order, flagChoices, frame, vertexBits);
         return coded;
     };
     auto spanningTree = [&](bool flagChoices, bool frame) {
         if (forestBuilding.valid()) forestBuilding.get();
         if (spanning.start.empty()) buildSpanningForest();
-        // Against the cheapest-first tree coded the same way, where it was.
-        const int rivalKey = 4 + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
-        const auto rival = trials->coded.find(rivalKey);
-        const auto rivalBits = trials->vertexBits.find(rivalKey - 4);
+        // Against the cheapest-first tree coded the same way, where it was
+        // (over the 4 nearest, or the chosen count where that coded smaller).
+        const int way = (flagChoices ? 2 : 0) + (frame ? 1 : 0);
+        auto rival = trials->coded.find(4 + way);
+        auto rivalBits = trials->vertexBits.find(way);
+        if (chosen > 0) {
+            const auto other = trials->coded.find(8 * chosen + 4 + way);
+            const auto otherBits = trials->vertexBits.find(4 * chosen + way);
+            if (other != trials->coded.end() && otherBits != trials->vertexBits.end() &&
+                (rival == trials->coded.end() || other->second.bytes.size() < rival->second.bytes.size())) {
+                rival = other;
+                rivalBits = otherBits;
+            }
+        }
         const bool against = which == GeometryTree::Smaller && rival != trials->coded.end() &&
                              rivalBits != trials->vertexBits.end();
         GeometryEncoding coded;
@@ -1050,10 +1086,48 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
                                against ? &rivalBits->second : nullptr, against ? rival->second.bytes.size() : 0);
         return coded;
     };
+    // The cheapest-first tree over `count` (an index), coded one way; the
+    // first way that grows the other counts chooses among them.
+    auto grow = [&](int count, const std::pair<bool, bool>& way) {
+        return trial(true, count, way.first, way.second,
+                     [&](bool flags, bool frame) { return cheapestFirst(count, flags, frame); });
+    };
+    auto growOthers = [&](const std::pair<bool, bool>& way, size_t four) {
+        if (chosen > 0) grow(chosen, way);
+        if (chosen >= 0) return;
+        size_t least = four;
+        chosen = 0;
+        for (int c = 1; c < countsTried; ++c) {
+            const size_t size = grow(c, way);
+            if (size < least) {
+                least = size;
+                chosen = c;
+            }
+        }
+        trials->treeNeighbours = kTreeNeighbourCounts[chosen];
+    };
+    const bool othersEveryWay = treeNeighbours == TreeNeighbours::SeveralEveryWay;
     for (const auto& way : ways) {
         // The cheapest-first tree is grown under the coding it is written with.
-        if (which != GeometryTree::SpanningTree) trial(true, way.first, way.second, cheapestFirst);
-        if (which != GeometryTree::CheapestFirst) trial(false, way.first, way.second, spanningTree);
+        if (which != GeometryTree::SpanningTree) {
+            const size_t four = grow(0, way);
+            if (othersEveryWay) growOthers(way, four);
+        }
+        if (which != GeometryTree::CheapestFirst) trial(false, 0, way.first, way.second, spanningTree);
+    }
+    if (which != GeometryTree::SpanningTree && countsTried > 1 && !othersEveryWay) {
+        // The other counts under the way that coded the tree over the 4
+        // nearest smallest (the first of equals).
+        std::pair<bool, bool> bestWay = ways.front();
+        size_t least = SIZE_MAX;
+        for (const auto& way : ways) {
+            const auto found = trials->coded.find(4 + (way.first ? 2 : 0) + (way.second ? 1 : 0));
+            if (found != trials->coded.end() && !found->second.bytes.empty() && found->second.bytes.size() < least) {
+                least = found->second.bytes.size();
+                bestWay = way;
+            }
+        }
+        growOthers(bestWay, least);
     }
     if (forestBuilding.valid()) forestBuilding.get();  // every spanning trial was coded before
     return trials == &own ? std::move(*best) : *best;

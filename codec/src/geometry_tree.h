@@ -33,6 +33,15 @@ enum class ChoiceCoding { Smaller, Flags, Symbol };
 // Whether the section may code residuals from the parent in its local
 // frame (format 3's bit G); by default both are tried.
 enum class FrameUse { Smaller, On, Off };
+// Which nearest neighbours of each vertex the cheapest-first tree may take
+// as its children. Four: its 4 nearest. Several: also its 8 and its 2
+// nearest, under the way (choice coding, frame) that coded the tree over
+// the 4 nearest smallest. SeveralEveryWay: the first way tried also grows
+// the tree over the 8 and the 2 nearest, and the count of the three that
+// codes smallest there is grown under every other way too. The tree over
+// the 4 nearest is grown under every way in each case, so no section is
+// larger than with Four.
+enum class TreeNeighbours { Four, Several, SeveralEveryWay };
 
 struct NearestNeighbours;
 
@@ -51,6 +60,8 @@ struct GeometryTreeTrials {
     // sections, in bits, by choice coding and frame: a spanning tree that
     // codes the same vertices for clearly more is given up.
     std::map<int, std::vector<float>> vertexBits;
+    // The cheapest-first tree's neighbour count, once chosen (0: not yet).
+    int treeNeighbours = 0;
 };
 
 // Codes the grid with each tree, choice coding and frame asked for and
@@ -65,7 +76,8 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     GeometryTree tree = GeometryTree::Smaller,
                                     ChoiceCoding choices = ChoiceCoding::Smaller,
                                     FrameUse frames = FrameUse::Smaller,
-                                    GeometryTreeTrials* trials = nullptr, int threads = 1);
+                                    GeometryTreeTrials* trials = nullptr, int threads = 1,
+                                    TreeNeighbours treeNeighbours = TreeNeighbours::Four);
 
 // Reads a section in the syntax of format version formatVersion (1 to
 // kFileFormatVersion; the section changed in versions 2, 3, 6 and 7:

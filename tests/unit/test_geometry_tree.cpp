@@ -266,6 +266,43 @@ TEST(GeometryTree, EachChoiceCodingRoundTripsAndTheSmallerIsKept) {
               encodeGeometryTree(fandisk, 12, NeighbourIndex::Auto, GeometryTree::Smaller, ChoiceCoding::Symbol).bytes.size());
 }
 
+// The cheapest-first tree grown over other neighbour counts (8 and 2
+// nearest, besides 4): every section decodes, none is larger than over the
+// 4 nearest alone, and where another count suits the mesh it is taken:
+// genus3 (a regular remesh) codes over its 2 nearest 3.4 % smaller here
+// (8,877 bytes against 9,190; in the encoder, whose grid is a little
+// different, 8,740 against 9,372).
+TEST(GeometryTree, OtherNeighbourCountsNeverCodeLarger) {
+    for (const char* name : {"genus3.ply", "tray-bottom.ply", "bunny-lres.ply", "mech-holes-shark.ply", "torus.ply"}) {
+        SCOPED_TRACE(name);
+        const std::vector<int32_t> grid = gridOf(name, 12);
+        const size_t n = grid.size() / 3;
+        const size_t four = encodeGeometryTree(grid, 12).bytes.size();
+        for (TreeNeighbours counts : {TreeNeighbours::Several, TreeNeighbours::SeveralEveryWay}) {
+            GeometryTreeTrials trials;
+            const GeometryEncoding several = encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::Smaller,
+                                                                ChoiceCoding::Smaller, FrameUse::Smaller, &trials, 1, counts);
+            EXPECT_LE(several.bytes.size(), four);
+            EXPECT_TRUE(trials.treeNeighbours == 4 || trials.treeNeighbours == 8 || trials.treeNeighbours == 2)
+                << trials.treeNeighbours;
+            const std::vector<int32_t> decoded =
+                decodeGeometryTree(several.bytes.data(), several.bytes.size(), n, 12, kFileFormatVersion);
+            for (size_t d = 0; d < n; ++d)
+                for (int k = 0; k < 3; ++k) ASSERT_EQ(decoded[3 * d + k], grid[3 * size_t(several.order[d]) + k]) << "vertex " << d;
+            // A second call with the same trials keeps the count chosen and
+            // the very same section.
+            const GeometryEncoding again = encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::Smaller,
+                                                              ChoiceCoding::Smaller, FrameUse::Smaller, &trials, 1, counts);
+            EXPECT_EQ(again.bytes, several.bytes);
+            EXPECT_EQ(again.order, several.order);
+            if (std::string(name) == "genus3.ply") {
+                EXPECT_EQ(trials.treeNeighbours, 2);
+                EXPECT_LT(double(several.bytes.size()), 0.98 * double(four)) << several.bytes.size() << " against " << four;
+            }
+        }
+    }
+}
+
 TEST(GeometryTree, ManyCoincidentPointsCodeDensely) {
     std::vector<int32_t> grid;
     for (int i = 0; i < 5000; ++i) grid.insert(grid.end(), {3, 1, 2});
@@ -276,11 +313,11 @@ TEST(GeometryTree, ManyCoincidentPointsCodeDensely) {
 }
 
 // The default geometry (auto) against the tree alone, on real meshes: never
-// larger; refine where it pays at least 3 % (at format 7, genus3: the tree
-// at 11.56 bits per vertex in all, refine 11.11, 3.9 % smaller;
-// mech-holes-shark: 13.89 and 13.33, 4.0 % smaller), the tree where refine
-// is not even tried (fandisk: 10.2 bits per vertex, under the 11 that make
-// it worth trying), and every file decodes to the same quantized mesh.
+// larger; refine where it pays (on these meshes, all under 8,192 vertices,
+// any gain once its estimate promised 1 %; larger meshes ask 3 %), the tree
+// where refine is not even tried (fandisk: 10.2 bits per vertex, under the
+// 11 that make it worth trying), and every file decodes to the same
+// quantized mesh.
 TEST(GeometryTree, AutoKeepsRefineOnlyWhereItPays) {
     for (const char* name : {"mech-holes-shark.ply", "genus3.ply", "nefertiti.ply", "fandisk.ply", "torus.ply", "elephant-with-holes.ply"}) {
         SCOPED_TRACE(name);
@@ -291,7 +328,7 @@ TEST(GeometryTree, AutoKeepsRefineOnlyWhereItPays) {
         const Encoded byDefault = encode(mesh);
         EXPECT_LE(byDefault.bytes.size(), byTree.bytes.size());
         if (byDefault.stats.geometry == GeometryCoder::Refine)
-            EXPECT_LE(double(byDefault.bytes.size()), 0.97 * double(byTree.bytes.size()));
+            EXPECT_LT(byDefault.bytes.size(), byTree.bytes.size());
         else
             EXPECT_EQ(byDefault.bytes, byTree.bytes);
         const Decoded a = decode(byDefault.bytes.data(), byDefault.bytes.size());
@@ -299,13 +336,16 @@ TEST(GeometryTree, AutoKeepsRefineOnlyWhereItPays) {
         EXPECT_EQ(a.mesh.faceCount(), b.mesh.faceCount());
         EXPECT_EQ(a.stats.geometry, byDefault.stats.geometry);
     }
+    // mech-holes-shark: refine with 2 low bits, 8,605 bytes against the
+    // tree's 8,819 (2.4 % smaller: kept on a mesh of 5,246 vertices).
     const Mesh shark = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/mech-holes-shark.ply");
     EXPECT_EQ(encode(shark).stats.geometry, GeometryCoder::Refine);
-    // genus3's tree costs 11.27 bits per vertex: over the 11 above which
-    // auto tries refine, which saves 3.9 % on it (its estimate, one coarse
-    // tree, is 1.4 % over the attempt: kRefineEstimateSlack lets it be made).
+    // genus3's tree costs over the 11 bits per vertex above which auto tries
+    // refine; at format 7 refine saved 3.9 % on it. Since the tree is also
+    // grown over each vertex's 2 nearest (8,965 bytes in all), refine with 2
+    // low bits (9,076) no longer pays.
     const Mesh genus3 = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/genus3.ply");
-    EXPECT_EQ(encode(genus3).stats.geometry, GeometryCoder::Refine);
+    EXPECT_EQ(encode(genus3).stats.geometry, GeometryCoder::SpanningTree);
     const Mesh fandisk = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/fandisk.ply");
     EXPECT_EQ(encode(fandisk).stats.geometry, GeometryCoder::SpanningTree);
     EncodeOptions automatic;
