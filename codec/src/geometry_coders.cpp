@@ -42,14 +42,17 @@ VertexSet decodeSorted(const uint8_t* data, size_t size, uint64_t vertexCount, i
 // casting, mountain); a large mesh would take four times as long.
 constexpr size_t kEveryTreeCodingUpTo = 32768;
 // On those meshes the cheapest-first tree is also grown over each vertex's
-// 8 and 2 nearest neighbours (TreeNeighbours), not only its 4 nearest:
-// which count codes smallest differs from mesh to mesh (turbine -19 % over
-// the 8 nearest, genus3 -7 % over the 2 nearest, igea +2.5 % over the 8).
-// Up to kOtherCountsEveryWayUpTo vertices, under every way (whole files:
-// mushroom 1.7 %, genus3 1.2 %, fertility 0.6 % smaller than under the
-// best way alone); above, under the best way only: on the corpus's meshes
-// of 16,385 to 32,768 vertices that gives the same files, for 2 more trees
-// grown instead of up to 5.
+// 8, 2 and 16 nearest neighbours (TreeNeighbours), not only its 4 nearest:
+// which count codes smallest differs from mesh to mesh (turbine -31 % over
+// the 16 nearest, genus3 -7 % over the 2 nearest, igea +2.5 % over the 8).
+// Up to kOtherCountsEveryWayUpTo vertices, the 8 and 2 nearest under every
+// way (whole files: mushroom 1.7 %, genus3 1.2 %, fertility 0.6 % smaller
+// than under the best way alone); above, under the best way only: on the
+// corpus's meshes of 16,385 to 32,768 vertices that gives the same files,
+// for 2 more trees grown instead of up to 5. The 16 nearest, whose tree
+// prices several times as many neighbours a step, under the best way only
+// (where the first way chose among 16 too, blobby-3cc and mushroom grew:
+// 16 won there and lost under other ways).
 constexpr size_t kOtherCountsEveryWayUpTo = 16384;
 TreeNeighbours treeNeighboursFor(size_t vertices) {
     if (vertices <= kOtherCountsEveryWayUpTo) return TreeNeighbours::SeveralEveryWay;

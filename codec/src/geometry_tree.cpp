@@ -738,11 +738,17 @@ namespace {
 // each count: turbine 8,877 bytes over 4, 7,165 over 8; genus3
 // 9,372 over 4, 8,740 over 2; igea 134,152 over 4, 137,483 over 8; the
 // corpus -1.6 % with the best count of the six for each mesh, -1.3 % with
-// the best of 4, 8 and 2, -1.0 % of 4 and 8): TreeNeighbours::Several and
-// SeveralEveryWay try these, the first of equal sections kept.
+// the best of 4, 8 and 2, -1.0 % of 4 and 8; over 16, with a graph of 16
+// nearest, turbine 6,084 and crank 57,602 against 66,154 over 4):
+// TreeNeighbours::Several and SeveralEveryWay try these, the first of
+// equal sections kept.
 constexpr int kTreeNeighbours = 4;
-constexpr int kTreeNeighbourCountsTried = 3;
-constexpr int kTreeNeighbourCounts[kTreeNeighbourCountsTried] = {kTreeNeighbours, 8, 2};
+constexpr int kTreeNeighbourCountsTried = 4;
+constexpr int kTreeNeighbourCounts[kTreeNeighbourCountsTried] = {kTreeNeighbours, 8, 2, 16};
+// SeveralEveryWay chooses among the first three on the first way; the
+// last, the widest graph, is grown under one way only.
+constexpr int kTreeNeighbourCountsEveryWay = 3;
+constexpr int kTreeNeighbourCountsMost = 16;
 // At most this many of a vertex's neighbours are looked at per step. A
 // surface vertex has about 6 to 10; only coincident points make hubs (ties
 // go to the lowest index, so m copies of a point all list the same four,
@@ -988,10 +994,14 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     if (!trials) trials = &own;
     if (trials->nearest && (trials->vertexCount != grid.size() / 3 || trials->bits != bits))
         throw Error(ErrorKind::Internal, "internal error: geometry tree trials reused for another grid");
-    if (!trials->nearest) {
+    // Several neighbour counts need each vertex's kTreeNeighbourCountsMost
+    // nearest; the spanning forest takes the first kNeighbours of them (the
+    // same as a search for that many: ties go by index either way).
+    const int nearestWanted = treeNeighbours == TreeNeighbours::Four ? kNeighbours : kTreeNeighbourCountsMost;
+    if (!trials->nearest || trials->nearest->k < nearestWanted) {
         trials->vertexCount = grid.size() / 3;
         trials->bits = bits;
-        trials->nearest = std::make_shared<const NearestNeighbours>(nearestNeighbours(grid, index, kNeighbours, threads));
+        trials->nearest = std::make_shared<const NearestNeighbours>(nearestNeighbours(grid, index, nearestWanted, threads));
     }
     const NearestNeighbours& nearest = *trials->nearest;
     const int cellBits = cellBitsFor(nearest.spacing, bits);
@@ -1019,7 +1029,8 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
             if ((choices == ChoiceCoding::Smaller || choices == coding) && (frames == FrameUse::Smaller || frames == use))
                 ways.emplace_back(coding == ChoiceCoding::Flags, use == FrameUse::On);
     auto buildSpanningForest = [&] {
-        spanning = spanningForest(grid, nearest);
+        spanning = nearest.k > kNeighbours ? spanningForest(grid, nearestOnly(nearest, kNeighbours))
+                                           : spanningForest(grid, nearest);
         orderChildrenForPrediction(grid, spanning);
     };
     // With a second thread, the spanning forest is built there while the
@@ -1092,12 +1103,15 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         return trial(true, count, way.first, way.second,
                      [&](bool flags, bool frame) { return cheapestFirst(count, flags, frame); });
     };
-    auto growOthers = [&](const std::pair<bool, bool>& way, size_t four) {
+    // Grows the counts from 1 up to `upTo` (an index) under `way`, choosing
+    // among them and the 4 nearest (`four`: that tree's size), unless an
+    // earlier call chose (then the chosen count alone).
+    auto growOthers = [&](const std::pair<bool, bool>& way, size_t four, int upTo) {
         if (chosen > 0) grow(chosen, way);
         if (chosen >= 0) return;
         size_t least = four;
         chosen = 0;
-        for (int c = 1; c < countsTried; ++c) {
+        for (int c = 1; c < upTo; ++c) {
             const size_t size = grow(c, way);
             if (size < least) {
                 least = size;
@@ -1111,23 +1125,28 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         // The cheapest-first tree is grown under the coding it is written with.
         if (which != GeometryTree::SpanningTree) {
             const size_t four = grow(0, way);
-            if (othersEveryWay) growOthers(way, four);
+            if (othersEveryWay) growOthers(way, four, kTreeNeighbourCountsEveryWay);
         }
         if (which != GeometryTree::CheapestFirst) trial(false, 0, way.first, way.second, spanningTree);
     }
-    if (which != GeometryTree::SpanningTree && countsTried > 1 && !othersEveryWay) {
-        // The other counts under the way that coded the tree over the 4
-        // nearest smallest (the first of equals).
+    if (which != GeometryTree::SpanningTree && countsTried > 1) {
+        // The way whose cheapest-first tree coded smallest so far (the
+        // first of equals): Several grows the other counts under it and
+        // chooses; SeveralEveryWay, the widest graph.
         std::pair<bool, bool> bestWay = ways.front();
         size_t least = SIZE_MAX;
-        for (const auto& way : ways) {
-            const auto found = trials->coded.find(4 + (way.first ? 2 : 0) + (way.second ? 1 : 0));
-            if (found != trials->coded.end() && !found->second.bytes.empty() && found->second.bytes.size() < least) {
-                least = found->second.bytes.size();
-                bestWay = way;
+        for (const auto& way : ways)
+            for (int c = 0; c < countsTried; ++c) {
+                const auto found = trials->coded.find(8 * c + 4 + (way.first ? 2 : 0) + (way.second ? 1 : 0));
+                if (found != trials->coded.end() && !found->second.bytes.empty() && found->second.bytes.size() < least) {
+                    least = found->second.bytes.size();
+                    bestWay = way;
+                }
             }
-        }
-        growOthers(bestWay, least);
+        if (othersEveryWay)
+            grow(kTreeNeighbourCountsTried - 1, bestWay);
+        else
+            growOthers(bestWay, least, countsTried);
     }
     if (forestBuilding.valid()) forestBuilding.get();  // every spanning trial was coded before
     return trials == &own ? std::move(*best) : *best;

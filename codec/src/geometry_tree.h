@@ -34,13 +34,14 @@ enum class ChoiceCoding { Smaller, Flags, Symbol };
 // frame (format 3's bit G); by default both are tried.
 enum class FrameUse { Smaller, On, Off };
 // Which nearest neighbours of each vertex the cheapest-first tree may take
-// as its children. Four: its 4 nearest. Several: also its 8 and its 2
-// nearest, under the way (choice coding, frame) that coded the tree over
-// the 4 nearest smallest. SeveralEveryWay: the first way tried also grows
-// the tree over the 8 and the 2 nearest, and the count of the three that
-// codes smallest there is grown under every other way too. The tree over
-// the 4 nearest is grown under every way in each case, so no section is
-// larger than with Four.
+// as its children. Four: its 4 nearest. Several: also its 8, 2 and 16
+// nearest, under the way (choice coding, frame) whose tree over the 4
+// nearest coded smallest. SeveralEveryWay: the first way tried also grows
+// the tree over the 8 and the 2 nearest, the count of the three that
+// codes smallest there is grown under every other way too, and the tree
+// over the 16 nearest under the way whose tree coded smallest. The tree
+// over the 4 nearest is grown under every way in each case, so no section
+// is larger than with Four.
 enum class TreeNeighbours { Four, Several, SeveralEveryWay };
 
 struct NearestNeighbours;

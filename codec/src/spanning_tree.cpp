@@ -49,6 +49,18 @@ NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourI
     return result;
 }
 
+NearestNeighbours nearestOnly(const NearestNeighbours& nearest, int k) {
+    const size_t row = size_t(nearest.k), kept = size_t(std::min(k, nearest.k));
+    const size_t n = nearest.neighbours.size() / std::max<size_t>(row, 1);
+    NearestNeighbours fewer;
+    fewer.k = int(kept);
+    fewer.spacing = nearest.spacing;
+    fewer.neighbours.resize(n * kept);
+    for (size_t v = 0; v < n; ++v)
+        std::copy_n(nearest.neighbours.begin() + ptrdiff_t(v * row), kept, fewer.neighbours.begin() + ptrdiff_t(v * kept));
+    return fewer;
+}
+
 namespace {
 
 // A fixed number of flags, one bit each (std::vector<bool> took more

@@ -24,6 +24,8 @@ struct NearestNeighbours {
     double spacing = 1;
 };
 NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourIndex index, int k, int threads = 1);
+// The first k (<= nearest.k) of each row: what a search for k nearest gives.
+NearestNeighbours nearestOnly(const NearestNeighbours& nearest, int k);
 
 // The symmetric count-nearest-neighbour graph (v and w joined when either
 // is among the other's `count` nearest; count <= nearest.k), compressed rows: the neighbours of v are
