@@ -45,17 +45,23 @@ constexpr size_t kEveryTreeCodingUpTo = 32768;
 // 8, 2 and 16 nearest neighbours (TreeNeighbours), not only its 4 nearest:
 // which count codes smallest differs from mesh to mesh (turbine -31 % over
 // the 16 nearest, genus3 -7 % over the 2 nearest, igea +2.5 % over the 8).
-// Up to kOtherCountsEveryWayUpTo vertices, the 8 and 2 nearest under every
-// way (whole files: mushroom 1.7 %, genus3 1.2 %, fertility 0.6 % smaller
-// than under the best way alone); above, under the best way only: on the
-// corpus's meshes of 16,385 to 32,768 vertices that gives the same files,
-// for 2 more trees grown instead of up to 5. The 16 nearest, whose tree
+// Below kOtherCountsEveryWayBelow vertices, the 8 and 2 nearest under the
+// first way, and the count of the three that codes smallest there under
+// every other way (whole files: mushroom 1.7 %, genus3 1.2 %, fertility
+// 0.6 % smaller than with the 8 and 2 nearest under the best way alone);
+// from there, under the best way only: on the corpus's meshes of 16,384
+// to 32,768 vertices that gives the same files, for 2 more trees grown
+// instead of up to 5. (From 16,384 vertices a spanning tree far behind is
+// also given up, against the cheapest-first tree coded the same way:
+// under every way, that could be a tree over another count, and a
+// spanning tree given up against it might have ended smaller than the
+// tree over the 4 nearest.) The 16 nearest, whose tree
 // prices several times as many neighbours a step, under the best way only
 // (where the first way chose among 16 too, blobby-3cc and mushroom grew:
 // 16 won there and lost under other ways).
-constexpr size_t kOtherCountsEveryWayUpTo = 16384;
+constexpr size_t kOtherCountsEveryWayBelow = 16384;
 TreeNeighbours treeNeighboursFor(size_t vertices) {
-    if (vertices <= kOtherCountsEveryWayUpTo) return TreeNeighbours::SeveralEveryWay;
+    if (vertices < kOtherCountsEveryWayBelow) return TreeNeighbours::SeveralEveryWay;
     return vertices <= kEveryTreeCodingUpTo ? TreeNeighbours::Several : TreeNeighbours::Four;
 }
 GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,

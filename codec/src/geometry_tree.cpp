@@ -740,8 +740,8 @@ namespace {
 // corpus -1.6 % with the best count of the six for each mesh, -1.3 % with
 // the best of 4, 8 and 2, -1.0 % of 4 and 8; over 16, with a graph of 16
 // nearest, turbine 6,084 and crank 57,602 against 66,154 over 4):
-// TreeNeighbours::Several and SeveralEveryWay try these, the first of
-// equal sections kept.
+// TreeNeighbours::Several and SeveralEveryWay try 4, 8, 2 and 16 (below),
+// the first of equal sections kept.
 constexpr int kTreeNeighbours = 4;
 constexpr int kTreeNeighbourCountsTried = 4;
 constexpr int kTreeNeighbourCounts[kTreeNeighbourCountsTried] = {kTreeNeighbours, 8, 2, 16};
@@ -750,7 +750,9 @@ constexpr int kTreeNeighbourCounts[kTreeNeighbourCountsTried] = {kTreeNeighbours
 constexpr int kTreeNeighbourCountsEveryWay = 3;
 constexpr int kTreeNeighbourCountsMost = 16;
 // At most this many of a vertex's neighbours are looked at per step. A
-// surface vertex has about 6 to 10; only coincident points make hubs (ties
+// surface vertex has about 6 to 10 in the symmetric graph of 4 nearest
+// (16 to 24 in that of 16 nearest, where this bounds the pricing of
+// ordinary vertices too); beyond, only coincident points make hubs (ties
 // go to the lowest index, so m copies of a point all list the same four,
 // which then have m neighbours each, and pricing them all at every step
 // would cost m^2).

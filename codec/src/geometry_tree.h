@@ -47,16 +47,17 @@ enum class TreeNeighbours { Four, Several, SeveralEveryWay };
 struct NearestNeighbours;
 
 // What encodeGeometryTree has worked out for one grid: its near neighbours
-// and every section it coded, by tree, choice coding and frame. An encoder
-// that codes the same grid twice (refine's estimate, then refine's attempt
-// on the same coarse grid) passes the same trials to both, and nothing is
-// grown or coded twice; the section kept is the one a single call would
-// keep.
+// and every section it coded, by tree, neighbour count, choice coding and
+// frame. An encoder that codes the same grid twice (refine's estimate, then
+// refine's attempt on the same coarse grid) passes the same trials to both,
+// and nothing is grown or coded twice (the neighbours aside: a call with
+// several neighbour counts after one with TreeNeighbours::Four searches
+// 16 nearest again); the section kept is the one a single call would keep.
 struct GeometryTreeTrials {
     size_t vertexCount = 0;  // of the grid they are for (checked)
     int bits = 0;
     std::shared_ptr<const NearestNeighbours> nearest;
-    std::map<int, GeometryEncoding> coded;  // by tree, choice coding and frame (a key encodeGeometryTree forms)
+    std::map<int, GeometryEncoding> coded;  // by tree, count, choice coding and frame (a key encodeGeometryTree forms)
     // What each vertex (by input index) cost in the cheapest-first
     // sections, in bits, by choice coding and frame: a spanning tree that
     // codes the same vertices for clearly more is given up.
@@ -66,9 +67,12 @@ struct GeometryTreeTrials {
 };
 
 // Codes the grid with each tree, choice coding and frame asked for and
-// returns the smallest section (the first of equal ones, in the order:
-// flags, then one symbol; within each, the frame on, then off; within
-// each, the cheapest-first tree, then the spanning tree). `trials`, when
+// returns the smallest section, the first of equal ones in the order they
+// are coded: each way in turn (flags, then one symbol; within each, the
+// frame on, then off) codes the cheapest-first tree over the 4 nearest,
+// with SeveralEveryWay the other counts the first way tries or the count
+// chosen there, then the spanning tree; after every way, the counts grown
+// under the best way alone. `trials`, when
 // given, holds what earlier calls on the same grid worked out, and gets
 // what this one works out. With `threads` 2 or more, the neighbour graph and
 // the spanning forest use a second thread (the section is the same).

@@ -120,7 +120,9 @@ void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, s
 }
 
 // For long lists (over kFewNearest; the decoder's far ranks take one vertex
-// from nthNearest instead, and the codec asks for no longer list):
+// from nthNearest instead; the encoder's neighbour graph asks for 16 on
+// meshes of up to 32,768 vertices, here for the points the cells left
+// uncertain):
 // everything in the rings, sorted, then acceptance in rank order. Sorting
 // is what costs, so it waits until the rings hold `count` vertices at all,
 // and after a failed attempt until they have doubled.

@@ -393,7 +393,7 @@ def main():
     w("## Geometry against the paper's point coder (Table 5)")
     w("")
     w("Bits per vertex of the geometry section at 12 bits. The default (`--geometry auto`) is the tree coder, or "
-      "refine where that makes the file at least 3 % smaller (armadillo here); `--geometry refine` tries k = 1..5 "
+      "refine where that makes the file at least 3 % smaller, or smaller at all under 8,192 vertices (armadillo here); `--geometry refine` tries k = 1..5 "
       "and falls back to the tree where it does not win (next section).")
     w("")
     w("| model | paper DR Geom (MMG06) | drm default | drm refine | raw grid | default below the paper |")
@@ -420,7 +420,7 @@ def main():
             peers[os.path.splitext(row["mesh"])[0]] = float(row["total_bpv"])
     w("## Geometry coders, every corpus mesh")
     w("")
-    w("The default (`--geometry auto`: the tree coder, or refine with 4 or 2 low bits where that is at least 3 % smaller) against `--geometry refine`, which codes a coarser grid with the tree, ranks the connectivity on "
+    w("The default (`--geometry auto`: the tree coder, or refine with 4 or 2 low bits where that is at least 3 % smaller, or smaller at all under 8,192 vertices) against `--geometry refine`, which codes a coarser grid with the tree, ranks the connectivity on "
       "it, and then codes the k low bits of each vertex predicted across the decoded triangles; the encoder tries "
       "k = 1..5 and keeps the smallest file, the tree's own when no k wins (k = 0 below). Draco cl10's whole file "
       "(`docs/data/peers.csv`, from `drm-peer-bench`, same 12-bit grid) for reference. Bits per vertex; `docs/format.md` "

@@ -62,10 +62,13 @@ constexpr int kMaxTriedRefineBits = 5;
 // kAutoRefineAboveBitsPerVertex, refine is also tried with each of
 // kAutoRefineLowBits, and kept where the file is at least
 // kAutoRefineMinimumGainPercent smaller (refine decodes 20-30 % slower;
-// under 8,192 vertices, tried where 1 % smaller by estimate and kept
-// wherever smaller; under 1,000, tried and kept wherever smaller).
-// (11.0: genus3's tree costs 11.27 since format 6's sign contexts, and refine
-// saves 3.9 % on it at format 7; no other corpus mesh moves from 11.5.)
+// under 8,192 vertices, tried where an estimate, within its slack,
+// promises 1 % and kept wherever smaller; under 1,000, tried where it may
+// be smaller at all and kept wherever smaller).
+// (11.0: genus3's tree cost 11.27 from format 6's sign contexts, and refine
+// saved 3.9 % on it at format 7; no other corpus mesh moved from 11.5.
+// Since its tree is also grown over the 2 nearest, genus3's tree costs
+// 10.6 bits per vertex, and refine is not tried.)
 constexpr double kAutoRefineAboveBitsPerVertex = 11.0;
 constexpr int kAutoRefineLowBits[] = {4, 2};
 constexpr int kAutoRefineMinimumGainPercent = 3;
