@@ -580,11 +580,35 @@ int threadsFor(const EncodeOptions& options) {
     return int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+// From this many vertices, refine's estimates give their coarse tree up
+// where it clearly cannot pay (TreeBudget, refineGeometryEstimate): on
+// smaller meshes they cost less, and there the extrapolation from the
+// first vertices strays further (mannequin, 11,703 vertices, with 4 low
+// bits: 1.6 % of the full tree's section above the end's figure at 4/16,
+// 2.4 % at 3/16).
+constexpr size_t kEstimateBudgetFromVertices = 16384;
+// Larger meshes' estimates are not budgeted: the rival's figures (and a
+// copy of the tree's section) would add to the encoder's peak memory, the
+// vertex section being coded beside the early connectivity there
+// (kSectionThreadsBesideUpToVertices).
+constexpr size_t kEstimateBudgetUpToVertices = kSectionThreadsBesideUpToVertices;
+
+// The full grid's cheapest-first tree (choices as flags, the frame on, over
+// the 4 nearest) as refine's estimates measure themselves against it: what
+// each vertex cost when picked, and its section's size in bits.
+struct TreeRival {
+    std::vector<float> pickBits;
+    double bits = 0;
+};
+
 // The vertex section of one attempt: the coder asked for, or its fallback
-// where that is no larger.
+// where that is no larger. `rival`: set by codeVertexSection where refine's
+// estimates will follow (the tree asked for by Auto, over
+// kAutoRefineAboveBitsPerVertex, on a mesh of kEstimateBudgetFromVertices).
 struct VertexSection {
     const GeometryCoderEntry* coder = nullptr;
     GeometryEncoding encoding;
+    TreeRival rival;
 };
 
 // `asked` is Refine exactly when lowBits > 0 (encodeConnectivity).
@@ -596,7 +620,27 @@ VertexSection codeVertexSection(const std::vector<int32_t>& quantized, const Enc
     const std::vector<int32_t>& vertexGrid = lowBits > 0 ? coarse : quantized;
     VertexSection section;
     section.coder = geometryCoderOf(asked);
+    // The tree's trials are kept here only where refine's estimates may
+    // want a rival: a section returned from them is copied, not moved.
+    const size_t vertexCount = vertexGrid.size() / 3;
+    GeometryTreeTrials treeTrials;
+    const bool rivalWanted = !trials && options.geometry == GeometryCoder::Auto && asked == GeometryCoder::SpanningTree &&
+                             lowBits == 0 && vertexCount >= kEstimateBudgetFromVertices &&
+                             vertexCount <= kEstimateBudgetUpToVertices;
+    if (rivalWanted) {
+        treeTrials.keepPickBits = true;
+        trials = &treeTrials;
+    }
     section.encoding = section.coder->encode(vertexGrid, options.bits - lowBits, options.index, trials, threadsFor(options));
+    if (rivalWanted && 8.0 * double(section.encoding.bytes.size()) > kAutoRefineAboveBitsPerVertex * double(vertexCount)) {
+        constexpr int kFlagsFrameFour = 3, kCheapestFirstFlagsFrameFour = 4 + kFlagsFrameFour;  // encodeGeometryTree's keys
+        const auto bits = treeTrials.pickBits.find(kFlagsFrameFour);
+        const auto coded = treeTrials.coded.find(kCheapestFirstFlagsFrameFour);
+        if (bits != treeTrials.pickBits.end() && coded != treeTrials.coded.end() && !coded->second.bytes.empty()) {
+            section.rival.pickBits = std::move(bits->second);
+            section.rival.bits = 8.0 * double(coded->second.bytes.size());
+        }
+    }
     // Scattered points (a soup of random triangles) predict no better
     // from their neighbours than from nothing: each fallback in turn is
     // kept where its section is no larger.
@@ -908,10 +952,10 @@ constexpr double kCrowdedConnectivityGrowth = 0.6;
 // by no more than this share of the tree's geometry.
 constexpr double kRefineEstimateSlack = 0.015;
 
-// Refine's vertex bits without the traversal: the tree over the coarse
-// grid, and the low bits predicted across the input's triangles (the
-// traversal rebuilds them in another order, which changes the refinement's
-// size little). Decides whether a whole refine attempt is worth making; the
+// Refine's vertex bits without the traversal: the low bits predicted
+// across the input's triangles (the traversal rebuilds them in another
+// order, which changes the refinement's size little), and the tree over the
+// coarse grid. Decides whether a whole refine attempt is worth making; the
 // tree it grows and codes is left in `trials` for that attempt. One tree
 // only, the cheapest-first with its choices as flags: refine's own coarse
 // tree takes the smallest of several (encodeRefineCoarse), which the
@@ -920,26 +964,51 @@ constexpr double kRefineEstimateSlack = 0.015;
 // at format 7). It spares a second tree on the coarse grid wherever refine
 // is not tried (venus, feline with 2 low bits).
 // Past skipAbove the exact figure does not matter (the caller skips the
-// attempt): the refinement pass stops as soon as the estimate must exceed
-// it, and SIZE_MAX is returned.
+// attempt): SIZE_MAX is returned as soon as the estimate must exceed it.
+//
+// The refinement comes first, over the input's numbering (it visits the
+// vertices as the triangles reach them: numbered in the coarse tree's
+// order, as until the twenty-fifth session, it took the same bytes on
+// every corpus mesh), so that the coarse tree knows the room left to it.
+// With a rival (the full grid's tree, TreeRival), the coarse tree is then
+// given up once it clearly cannot fit that room (TreeBudget): until then
+// venus grew both coarse trees to the end for estimates that missed by 6
+// and 11 %. Where the tree is not given up the estimate is the same figure.
+//
+// How far the coarse tree's extrapolated section may run over its room
+// before it is given up, as a share of the rival's section. On the
+// corpus's meshes of 16,384 vertices or more, from 4/16 of the vertices on,
+// the extrapolation came within 1.5 % of the end's figure where it was
+// above it (dinosaur-24k with 2 low bits); the trees given up (venus,
+// nefertiti-50k, tower-holes, pinocchio, dragon-res3, falconstatue-boundary,
+// cycloidal, both low-bit counts each) ran 4.9 to 39 % over at 4/16;
+// feline's, whose estimates miss by less, are grown to the end.
+constexpr double kEstimateGiveUpMargin = 0.03;
 size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::vector<uint32_t>& triangles, int bits,
-                              int lowBits, NeighbourIndex index, GeometryTreeTrials& trials, double skipAbove) {
+                              int lowBits, NeighbourIndex index, GeometryTreeTrials& trials, double skipAbove,
+                              const TreeRival* rival) {
+    if (skipAbove < 0) return SIZE_MAX;
+    const Refinement refinement =
+        encodeRefinement(quantized, lowBits, triangles, skipAbove < double(SIZE_MAX / 2) ? size_t(skipAbove) : SIZE_MAX);
+    if (refinement.overBudget) return SIZE_MAX;
+    const double room = skipAbove - double(refinement.bytes.size());
+    TreeBudget budget;
+    if (rival && !rival->pickBits.empty()) {
+        budget.rivalPickBits = &rival->pickBits;
+        budget.rivalBits = rival->bits;
+        budget.bits = 8.0 * room;
+        budget.margin = kEstimateGiveUpMargin * rival->bits;
+        trials.budget = &budget;
+    }
+    struct BudgetCleared {  // the attempt grows its own trees on these trials, unbudgeted
+        GeometryTreeTrials& trials;
+        ~BudgetCleared() { trials.budget = nullptr; }
+    } cleared{trials};
     const GeometryEncoding tree =
         encodeGeometryTree(coarsenGrid(quantized, lowBits), bits - lowBits, index, GeometryTree::CheapestFirst,
                            ChoiceCoding::Flags, FrameUse::On, &trials);
-    std::vector<uint32_t> decodedIndex(tree.order.size());
-    std::vector<int32_t> fine(quantized.size());
-    for (size_t d = 0; d < tree.order.size(); ++d) {
-        decodedIndex[tree.order[d]] = uint32_t(d);
-        for (int k = 0; k < 3; ++k) fine[3 * d + k] = quantized[3 * size_t(tree.order[d]) + k];
-    }
-    std::vector<uint32_t> renumbered(triangles.size());
-    for (size_t c = 0; c < triangles.size(); ++c) renumbered[c] = decodedIndex[triangles[c]];
-    const double room = std::floor(skipAbove - double(tree.bytes.size()));
-    if (room < 0) return SIZE_MAX;
-    const Refinement refinement =
-        encodeRefinement(fine, lowBits, renumbered, room < double(SIZE_MAX / 2) ? size_t(room) : SIZE_MAX);
-    return refinement.overBudget ? SIZE_MAX : tree.bytes.size() + refinement.bytes.size();
+    if (tree.bytes.empty() || double(tree.bytes.size()) > room) return SIZE_MAX;
+    return tree.bytes.size() + refinement.bytes.size();
 }
 
 // `section`: the tree's vertex section on the full grid when the caller
@@ -951,7 +1020,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
                                  EarlyConnectivity* early) {
     EncodeOptions tree = options;
     tree.geometry = GeometryCoder::SpanningTree;
-    if (!section.coder) section = codeVertexSection(prepared.quantized, tree, tree.geometry, 0, nullptr);
+    if (!section.coder) section = codeVertexSection(prepared.quantized, options, tree.geometry, 0, nullptr);
     const size_t treeGeometry = section.encoding.bytes.size();
     const double treeBits = 8.0 * double(treeGeometry) / double(std::max<size_t>(1, mesh.vertexCount()));
     if (treeBits <= kAutoRefineAboveBitsPerVertex)
@@ -984,10 +1053,13 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     // refine can win only where its vertex bits alone save the gain asked
     // of it: the estimate spares the whole attempt elsewhere (venus,
     // casting, anchor). It stops as soon as it must exceed skipAbove.
+    // The rival the estimates' coarse trees measure themselves against
+    // (held apart: the section itself goes to the tree's attempt).
+    const TreeRival rival = std::move(section.rival);
     auto estimate = [&](Estimate& e, double treeTotal) {
         const double skipAbove = double(treeGeometry) + slack - minimumGain * treeTotal;
         e.bytes = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, e.lowBits, options.index,
-                                         e.trials, skipAbove);
+                                         e.trials, skipAbove, &rival);
         e.growth = e.trials.nearest && e.trials.nearest->spacing <= kCrowdedCoarseSpacing
                        ? kCrowdedConnectivityGrowth * double(mesh.vertexCount()) / 8.0
                        : 0.0;

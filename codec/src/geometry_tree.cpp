@@ -774,16 +774,40 @@ static_assert(kMaxNeighboursLooked <= size_t(kMaxPricedTogether), "cheapestPick 
 // vertex in preorder (a root's coordinates, any other's choice and
 // residuals): all of the section but the child counts, which are known
 // only once the tree is grown (writeGrownTree puts them in).
+// With a budget (TreeBudget), growing stops where the budget gives the
+// tree up: `givenUp` is set and the rest is incomplete. `pickBits` (may be
+// null) gets what each vertex cost when picked, by input index.
 struct GrownTree {
     std::vector<uint32_t> order;       // coding order -> input vertex
     std::vector<uint32_t> childCount;  // per input vertex (counts, not lists: 8 bytes a vertex, not about 56)
+    bool givenUp = false;
 };
+// The budget's test after each sixteenth of the vertices, from the fourth
+// on: the first ones are mostly the models learning (as for the spanning
+// tree against the cheapest-first one, below).
+constexpr size_t kBudgetSteps = 16;
+constexpr size_t kBudgetFromStep = 4;
 GrownTree cheapestFirstTree(const std::vector<int32_t>& grid, int bits, const NeighbourGraph& graph, int cellBits,
-                            bool flagChoices, bool frame, CodingLog& log, uint64_t& framedResiduals) {
+                            bool flagChoices, bool frame, CodingLog& log, uint64_t& framedResiduals,
+                            const TreeBudget* budget, std::vector<float>* pickBits) {
     const size_t n = grid.size() / 3;
     GrownTree grown;
     grown.order.reserve(n);
     grown.childCount.assign(n, 0);
+    if (pickBits) pickBits->assign(n, 0.0f);
+    // What the vertices coded so far cost here and in the budget's rival;
+    // `picked` tells whether the budget gives the tree up.
+    double spent = 0, rivalSpent = 0;
+    const size_t step = (n + kBudgetSteps - 1) / kBudgetSteps;
+    auto picked = [&](uint32_t vertex, double cost, uint32_t coded) {
+        if (pickBits) (*pickBits)[vertex] = float(cost);
+        if (!budget) return false;
+        spent += cost;
+        rivalSpent += double((*budget->rivalPickBits)[vertex]);
+        if (coded % step != 0 || coded / step < kBudgetFromStep) return false;
+        const double extrapolated = budget->rivalBits + (spent - rivalSpent) * double(n) / double(coded);
+        return extrapolated > budget->bits + budget->margin;
+    };
     std::vector<uint8_t> done(n, 0);
     // Per vertex, where its undecoded neighbours begin: a vertex decoded
     // stays decoded, so the cursor only moves on.
@@ -811,6 +835,10 @@ GrownTree cheapestFirstTree(const std::vector<int32_t>& grid, int bits, const Ne
         s.place(self, rootAt);
         grown.order.push_back(root);
         stack.push_back({root, self++});
+        if (picked(root, 3.0 * bits, self)) {
+            grown.givenUp = true;
+            return grown;
+        }
         while (!stack.empty()) {
             const Frame top = stack.back();
             const uint32_t* first = graph.neighbour.data() + cursor[top.vertex];
@@ -843,6 +871,10 @@ GrownTree cheapestFirstTree(const std::vector<int32_t>& grid, int bits, const Ne
             log.endUnit();
             s.place(self, at);
             stack.push_back({next, self++});
+            if (picked(next, nextPick.bits, self)) {
+                grown.givenUp = true;
+                return grown;
+            }
         }
     }
     framedResiduals = s.framedResiduals;
@@ -1068,9 +1100,15 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         // to three times its size while it moved.
         log.reserve(16 * (grid.size() / 3));
         GeometryEncoding coded;
-        GrownTree grown = cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals);
+        const int bitsKey = 4 * count + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
+        GrownTree grown = cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals,
+                                            trials->budget, trials->keepPickBits ? &trials->pickBits[bitsKey] : nullptr);
+        if (grown.givenUp) {
+            trials->pickBits.erase(bitsKey);
+            return GeometryEncoding();
+        }
         coded.order = std::move(grown.order);
-        std::vector<float>& vertexBits = trials->vertexBits[4 * count + (flagChoices ? 2 : 0) + (frame ? 1 : 0)];
+        std::vector<float>& vertexBits = trials->vertexBits[bitsKey];
         coded.bytes = writeGrownTree(log, cellBits, grown.childCount, coded.order, flagChoices, frame, vertexBits);
         return coded;
     };
@@ -1151,6 +1189,7 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
             growOthers(bestWay, least, countsTried);
     }
     if (forestBuilding.valid()) forestBuilding.get();  // every spanning trial was coded before
+    if (!best) return GeometryEncoding();  // every tree given up (a budget)
     return trials == &own ? std::move(*best) : *best;
 }
 

@@ -46,6 +46,21 @@ enum class TreeNeighbours { Four, Several, SeveralEveryWay };
 
 struct NearestNeighbours;
 
+// What a cheapest-first tree is held to while it grows (refine's estimate,
+// encoder.cpp): another tree over the same vertices, coded earlier, and the
+// section size this one must stay under. After each sixteenth of its
+// vertices from the fourth on, the tree extrapolates its size from what
+// its vertices cost so far against what the same vertices cost in the
+// rival (each as priced when it was picked: residual and choice, child
+// counts left out), and is given up (the section comes back empty) where
+// that passes `bits` by more than `margin`.
+struct TreeBudget {
+    const std::vector<float>* rivalPickBits = nullptr;  // per input vertex
+    double rivalBits = 0;  // the rival's section
+    double bits = 0;
+    double margin = 0;
+};
+
 // What encodeGeometryTree has worked out for one grid: its near neighbours
 // and every section it coded, by tree, neighbour count, choice coding and
 // frame. An encoder that codes the same grid twice (refine's estimate, then
@@ -64,6 +79,14 @@ struct GeometryTreeTrials {
     std::map<int, std::vector<float>> vertexBits;
     // The cheapest-first tree's neighbour count, once chosen (0: not yet).
     int treeNeighbours = 0;
+    // With keepPickBits, what each vertex (by input index) cost when the
+    // cheapest-first trees picked it (TreeBudget), by the keys of
+    // vertexBits: a rival for a later tree's budget.
+    bool keepPickBits = false;
+    std::map<int, std::vector<float>> pickBits;
+    // Where set, every cheapest-first tree grown for these trials is held
+    // to it; one given up is kept as an empty section.
+    const TreeBudget* budget = nullptr;
 };
 
 // Codes the grid with each tree, choice coding and frame asked for and
@@ -75,7 +98,9 @@ struct GeometryTreeTrials {
 // under the best way alone. `trials`, when
 // given, holds what earlier calls on the same grid worked out, and gets
 // what this one works out. With `threads` 2 or more, the neighbour graph and
-// the spanning forest use a second thread (the section is the same).
+// the spanning forest use a second thread (the section is the same). The
+// section is empty only where the trials' budget gave up every tree asked
+// for.
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     NeighbourIndex index = NeighbourIndex::Auto,
                                     GeometryTree tree = GeometryTree::Smaller,

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "drm/drm.h"
+#include "geometry_refine.h"
 #include "geometry_tree.h"
 #include "tiny_ply.h"
 
@@ -310,6 +311,64 @@ TEST(GeometryTree, OtherNeighbourCountsNeverCodeLarger) {
                 EXPECT_LT(double(several.bytes.size()), 0.98 * double(four)) << several.bytes.size() << " against " << four;
             }
         }
+    }
+}
+
+// A budget (refine's estimate in the encoder) holds a cheapest-first tree
+// against a rival's pick bits: the tree extrapolates its section from the
+// vertices coded so far. Grown against itself the extrapolation is exact,
+// so a budget of its own size keeps it; a coarse tree whose budget it
+// cannot fit is given up (an empty section, kept as such in the trials);
+// with room to spare the section is the one grown without a budget.
+TEST(GeometryTree, ABudgetGivesUpATreeThatCannotFitIt) {
+    for (const char* name : {"fandisk.ply", "bunny-lres.ply"}) {
+        SCOPED_TRACE(name);
+        const std::vector<int32_t> grid = gridOf(name, 12);
+        const size_t n = grid.size() / 3;
+        GeometryTreeTrials rivalTrials;
+        rivalTrials.keepPickBits = true;
+        const GeometryEncoding rival = encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::CheapestFirst,
+                                                          ChoiceCoding::Flags, FrameUse::On, &rivalTrials);
+        ASSERT_EQ(rivalTrials.pickBits.count(3), 1u);  // flags, frame, the 4 nearest
+        const std::vector<float>& pickBits = rivalTrials.pickBits.at(3);
+        ASSERT_EQ(pickBits.size(), n);
+        double picked = 0;
+        for (float b : pickBits) picked += double(b);
+        const double rivalBits = 8.0 * double(rival.bytes.size());
+        // Child counts are left out of the pick bits, and little else.
+        EXPECT_LT(picked, rivalBits);
+        EXPECT_GT(picked, 0.7 * rivalBits);
+
+        TreeBudget own{&pickBits, rivalBits, rivalBits, 0.001 * rivalBits};
+        GeometryTreeTrials again;
+        again.budget = &own;
+        EXPECT_EQ(encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::CheapestFirst, ChoiceCoding::Flags,
+                                     FrameUse::On, &again)
+                      .bytes,
+                  rival.bytes);
+
+        const std::vector<int32_t> coarse = coarsenGrid(grid, 2);
+        const GeometryEncoding unbudgeted = encodeGeometryTree(coarse, 10, NeighbourIndex::Auto, GeometryTree::CheapestFirst,
+                                                               ChoiceCoding::Flags, FrameUse::On);
+        const double coarseBits = 8.0 * double(unbudgeted.bytes.size());
+        ASSERT_LT(coarseBits, 0.9 * rivalBits);
+        TreeBudget tight{&pickBits, rivalBits, 0.5 * coarseBits, 0.0};
+        GeometryTreeTrials givenUp;
+        givenUp.budget = &tight;
+        const GeometryEncoding none = encodeGeometryTree(coarse, 10, NeighbourIndex::Auto, GeometryTree::CheapestFirst,
+                                                         ChoiceCoding::Flags, FrameUse::On, &givenUp);
+        EXPECT_TRUE(none.bytes.empty());
+        ASSERT_EQ(givenUp.coded.size(), 1u);
+        EXPECT_TRUE(givenUp.coded.begin()->second.bytes.empty());
+        EXPECT_TRUE(givenUp.vertexBits.empty());
+
+        TreeBudget roomy{&pickBits, rivalBits, 2.0 * coarseBits, 0.0};
+        GeometryTreeTrials kept;
+        kept.budget = &roomy;
+        EXPECT_EQ(encodeGeometryTree(coarse, 10, NeighbourIndex::Auto, GeometryTree::CheapestFirst, ChoiceCoding::Flags,
+                                     FrameUse::On, &kept)
+                      .bytes,
+                  unbudgeted.bytes);
     }
 }
 
