@@ -62,7 +62,7 @@ constexpr size_t kEveryTreeCodingUpTo = 32768;
 constexpr size_t kOtherCountsEveryWayBelow = 16384;
 TreeNeighbours treeNeighboursFor(size_t vertices) {
     if (vertices < kOtherCountsEveryWayBelow) return TreeNeighbours::SeveralEveryWay;
-    return vertices <= kEveryTreeCodingUpTo ? TreeNeighbours::Several : TreeNeighbours::Four;
+    return vertices <= kEveryTreeCodingUpTo ? TreeNeighbours::Several : TreeNeighbours::FourUnlessRegular;
 }
 GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
                             GeometryTreeTrials* trials, int threads) {

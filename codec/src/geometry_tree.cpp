@@ -1011,6 +1011,12 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
 // Below this many vertices the spanning forest is built on the calling
 // thread: a second one costs more than the forest.
 constexpr size_t kForestBesideFromVertices = 16384;
+// FourUnlessRegular (TreeNeighbours): the other counts' trees are given up
+// where their extrapolated sections run this share of the tree over the 4
+// nearest past the best section so far (as refine's estimates are,
+// encoder.cpp); on larger meshes they are grown to the end.
+constexpr double kRegularCountsMargin = 0.03;
+constexpr size_t kPickBitsForRegularUpTo = size_t(1) << 18;
 
 // Two trees, each with the choice coded both ways, the smallest section
 // kept (the decoder reads any the same way): the cheapest-first tree wins
@@ -1031,13 +1037,16 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     // Several neighbour counts need each vertex's kTreeNeighbourCountsMost
     // nearest; the spanning forest takes the first kNeighbours of them (the
     // same as a search for that many: ties go by index either way).
-    const int nearestWanted = treeNeighbours == TreeNeighbours::Four ? kNeighbours : kTreeNeighbourCountsMost;
+    const bool fourFirst = treeNeighbours == TreeNeighbours::Four || treeNeighbours == TreeNeighbours::FourUnlessRegular;
+    const int nearestWanted = fourFirst ? kNeighbours : kTreeNeighbourCountsMost;
     if (!trials->nearest || trials->nearest->k < nearestWanted) {
         trials->vertexCount = grid.size() / 3;
         trials->bits = bits;
         trials->nearest = std::make_shared<const NearestNeighbours>(nearestNeighbours(grid, index, nearestWanted, threads));
     }
-    const NearestNeighbours& nearest = *trials->nearest;
+    // Held: FourUnlessRegular may search the neighbours again into the trials.
+    const std::shared_ptr<const NearestNeighbours> nearestHeld = trials->nearest;
+    const NearestNeighbours& nearest = *nearestHeld;
     const int cellBits = cellBitsFor(nearest.spacing, bits);
     GeometryEncoding* best = nullptr;
     // The cheapest-first tree's neighbour counts (kTreeNeighbourCounts, by
@@ -1047,13 +1056,14 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     // `chosen` is the count that coded smallest there (< 0: not yet chosen;
     // an earlier call's choice is kept in the trials). SeveralEveryWay grows
     // a chosen count other than the 4 nearest under every later way too.
-    const int countsTried = treeNeighbours == TreeNeighbours::Four ? 1 : kTreeNeighbourCountsTried;
-    int chosen = 0;
-    if (countsTried > 1) {
-        chosen = -1;
-        for (int c = 0; c < countsTried; ++c)
-            if (trials->treeNeighbours == kTreeNeighbourCounts[c]) chosen = c;
-    }
+    int countsTried = fourFirst ? 1 : kTreeNeighbourCountsTried;
+    // An earlier call's choice among the counts (-1: none).
+    auto chosenBefore = [&] {
+        for (int c = 0; c < kTreeNeighbourCountsTried; ++c)
+            if (trials->treeNeighbours == kTreeNeighbourCounts[c]) return c;
+        return -1;
+    };
+    int chosen = countsTried > 1 ? chosenBefore() : 0;
     NeighbourGraph graphs[kTreeNeighbourCountsTried];
     Forest spanning;  // kept for the next trial
     // The ways asked for, in the order tried (see the loop below).
@@ -1091,9 +1101,16 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         if (!best || found->second.bytes.size() < best->bytes.size()) best = &found->second;
         return found->second.bytes.size();
     };
+    // FourUnlessRegular holds the other counts' trees to the best section
+    // so far (TreeBudget), against the tree over the 4 nearest coded the
+    // same way: what each vertex cost when picked there is kept for that
+    // (up to kPickBitsForRegularUpTo vertices: 4 bytes a vertex).
+    const bool pickBitsForRegular = treeNeighbours == TreeNeighbours::FourUnlessRegular &&
+                                    which == GeometryTree::Smaller && grid.size() / 3 <= kPickBitsForRegularUpTo;
+    std::map<int, std::vector<float>> ownPickBits;
     auto cheapestFirst = [&](int count, bool flagChoices, bool frame) {
         NeighbourGraph& graph = graphs[count];
-        if (graph.offset.empty()) graph = symmetricGraph(nearest, kTreeNeighbourCounts[count]);
+        if (graph.offset.empty()) graph = symmetricGraph(*trials->nearest, kTreeNeighbourCounts[count]);
         CodingLog log;
         // Scans log 11 to 15 words a vertex (igea 12.9, horse 13.9, igea x4
         // 11.3): reserved, the log is not grown by doubling, which held up
@@ -1101,8 +1118,11 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         log.reserve(16 * (grid.size() / 3));
         GeometryEncoding coded;
         const int bitsKey = 4 * count + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
+        std::vector<float>* pickBits = trials->keepPickBits ? &trials->pickBits[bitsKey]
+                                       : count == 0 && pickBitsForRegular ? &ownPickBits[bitsKey]
+                                                                          : nullptr;
         GrownTree grown = cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals,
-                                            trials->budget, trials->keepPickBits ? &trials->pickBits[bitsKey] : nullptr);
+                                            trials->budget, pickBits);
         if (grown.givenUp) {
             trials->pickBits.erase(bitsKey);
             return GeometryEncoding();
@@ -1169,6 +1189,20 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         }
         if (which != GeometryTree::CheapestFirst) trial(false, 0, way.first, way.second, spanningTree);
     }
+    bool regular = false;  // FourUnlessRegular: a spanning tree coded to the end
+    if (treeNeighbours == TreeNeighbours::FourUnlessRegular && which == GeometryTree::Smaller) {
+        for (const auto& way : ways) {
+            const auto found = trials->coded.find((way.first ? 2 : 0) + (way.second ? 1 : 0));
+            regular |= found != trials->coded.end() && !found->second.bytes.empty();
+        }
+        if (regular) {
+            if (trials->nearest->k < kTreeNeighbourCountsMost)
+                trials->nearest = std::make_shared<const NearestNeighbours>(
+                    nearestNeighbours(grid, index, kTreeNeighbourCountsMost, threads));
+            countsTried = kTreeNeighbourCountsTried;
+            chosen = chosenBefore();
+        }
+    }
     if (which != GeometryTree::SpanningTree && countsTried > 1) {
         // The way whose cheapest-first tree coded smallest so far (the
         // first of equals): Several grows the other counts under it and
@@ -1183,6 +1217,28 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
                     bestWay = way;
                 }
             }
+        TreeBudget budget;
+        struct BudgetCleared {
+            GeometryTreeTrials* trials;
+            bool set = false;
+            ~BudgetCleared() {
+                if (set) trials->budget = nullptr;
+            }
+        } cleared{trials};
+        if (regular && !trials->budget) {
+            const int key = (bestWay.first ? 2 : 0) + (bestWay.second ? 1 : 0);
+            const auto kept = trials->keepPickBits ? trials->pickBits.find(key) : ownPickBits.find(key);
+            const auto rival = trials->coded.find(4 + key);
+            if (kept != (trials->keepPickBits ? trials->pickBits.end() : ownPickBits.end()) &&
+                rival != trials->coded.end() && !rival->second.bytes.empty() && best) {
+                budget.rivalPickBits = &kept->second;
+                budget.rivalBits = 8.0 * double(rival->second.bytes.size());
+                budget.bits = 8.0 * double(best->bytes.size());
+                budget.margin = kRegularCountsMargin * budget.rivalBits;
+                trials->budget = &budget;
+                cleared.set = true;
+            }
+        }
         if (othersEveryWay)
             grow(kTreeNeighbourCountsTried - 1, bestWay);
         else

@@ -41,8 +41,10 @@ enum class FrameUse { Smaller, On, Off };
 // codes smallest there is grown under every other way too, and the tree
 // over the 16 nearest under the way whose tree coded smallest. The tree
 // over the 4 nearest is grown under every way in each case, so no section
-// is larger than with Four.
-enum class TreeNeighbours { Four, Several, SeveralEveryWay };
+// is larger than with Four. FourUnlessRegular: as Four, and as Several where
+// a spanning tree was coded to the end (given up nowhere: a regular mesh,
+// as CAD meshes are), the neighbours then searched again for 16.
+enum class TreeNeighbours { Four, Several, SeveralEveryWay, FourUnlessRegular };
 
 struct NearestNeighbours;
 
