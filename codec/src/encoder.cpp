@@ -50,13 +50,19 @@ namespace {
 // not made.
 constexpr size_t kTryWithoutLeversBelowFaces = 4096;
 // Below this many faces, the traversal is also started from
-// kFirstVerticesTried - 1 other vertices spread over the numbering, and in
-// the input's order (encodeWithGeometry). Measured on the corpus, whole file
-// in geometric mean against format 7: 0.9941 with the input's order alone,
-// 0.9927 with one other vertex, 0.9919 with three, 0.9916 with seven; the
-// corpus took 7 %, 9 % and 20 % more encoding time for them.
+// kFirstVerticesTried - 1 other vertices, at the first multiples of
+// 1 / kFirstVerticesSpread of the numbering, and in the input's order
+// (encodeWithGeometry). Measured on the corpus, whole file in geometric
+// mean against format 7: 0.9941 with the input's order alone, 0.9927 with
+// one other vertex, 0.9919 with three, 0.9916 with seven; the corpus took
+// 7 %, 9 % and 20 % more encoding time for them. Three were tried until
+// the twenty-fifth session; one, a quarter of the way, now: the corpus's
+// files 111 bytes larger in all (ten grow, couplingdown the most, by 0.38 %;
+// with the vertex half way instead, turbine would grow by 0.54 %), its
+// encoding 10 % less CPU, small meshes' 15 to 36 % (docs/speed.md).
 constexpr size_t kTryStartsBelowFaces = 20000;
-constexpr size_t kFirstVerticesTried = 4;
+constexpr size_t kFirstVerticesTried = 2;
+constexpr size_t kFirstVerticesSpread = 4;
 // The early connectivity (encodeBeforeVertexSection) holds the traversal's
 // tables while the vertex coder holds its own, so the peak memory is about
 // their sum. On igea subdivided once (537,374 vertices) it takes the
@@ -773,7 +779,7 @@ Attempt encodeNumbered(const Mesh& mesh, const PreparedMesh& prepared, const Man
         auto inAFace = [&](size_t v) { return edgesFrom[v] != edgesFrom[v + 1]; };
         std::vector<uint32_t> tried;
         for (size_t k = 0; k < kFirstVerticesTried; ++k) {
-            size_t v = k * numbered.vertexCount / kFirstVerticesTried;
+            size_t v = k * numbered.vertexCount / kFirstVerticesSpread;
             while (v < numbered.vertexCount && !inAFace(v)) ++v;
             if (v == numbered.vertexCount || std::find(tried.begin(), tried.end(), uint32_t(v)) != tried.end()) continue;
             tried.push_back(uint32_t(v));

@@ -299,9 +299,9 @@ struct EncodeOptions {
     bool tryWithoutLevers = true;
     // Where the traversal starts each component changes every rank after
     // it. Off: each component at its smallest vertex. On (the default):
-    // below 20000 faces also from three other first vertices and in the
-    // input's face order, keeping the smallest file (0.8 % smaller on the
-    // corpus in geometric mean; about twice the encoding time on such
+    // below 20000 faces also from one other first vertex and in the
+    // input's face order, keeping the smallest file (0.7 % smaller on the
+    // corpus in geometric mean; 1.4 to 2 times the encoding time on such
     // meshes); from format 9 each over both vertex numberings (Morton order
     // and the vertex coder's: Stats::mortonNumbering). Larger meshes start
     // at their smallest vertices in Morton numbering either way.
