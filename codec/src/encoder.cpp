@@ -589,10 +589,10 @@ int threadsFor(const EncodeOptions& options) {
 // From this many vertices, refine's estimates give their coarse tree up
 // where it clearly cannot pay (TreeBudget, refineGeometryEstimate): on
 // smaller meshes they cost less, and there the extrapolation from the
-// first vertices strays further (mannequin, 11,703 vertices, with 4 low
-// bits: 1.6 % of the full tree's section above the end's figure at 4/16,
-// 2.4 % at 3/16).
-constexpr size_t kEstimateBudgetFromVertices = 16384;
+// first vertices strays further (from 8,192 vertices on the corpus, at
+// most mannequin's, 11,703 vertices, with 4 low bits: 1.6 % of the full
+// tree's section above the end's figure at 4/16, 2.4 % at 3/16).
+constexpr size_t kEstimateBudgetFromVertices = 8192;
 // Larger meshes' estimates are not budgeted: the rival's figures (and a
 // copy of the tree's section) would add to the encoder's peak memory, the
 // vertex section being coded beside the early connectivity there
