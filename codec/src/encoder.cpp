@@ -610,7 +610,8 @@ struct TreeRival {
 // The vertex section of one attempt: the coder asked for, or its fallback
 // where that is no larger. `rival`: set by codeVertexSection where refine's
 // estimates will follow (the tree asked for by Auto, over
-// kAutoRefineAboveBitsPerVertex, on a mesh of kEstimateBudgetFromVertices).
+// kAutoRefineAboveBitsPerVertex, on a mesh of kEstimateBudgetFromVertices
+// to kEstimateBudgetUpToVertices).
 struct VertexSection {
     const GeometryCoderEntry* coder = nullptr;
     GeometryEncoding encoding;
@@ -639,9 +640,9 @@ VertexSection codeVertexSection(const std::vector<int32_t>& quantized, const Enc
     }
     section.encoding = section.coder->encode(vertexGrid, options.bits - lowBits, options.index, trials, threadsFor(options));
     if (rivalWanted && 8.0 * double(section.encoding.bytes.size()) > kAutoRefineAboveBitsPerVertex * double(vertexCount)) {
-        constexpr int kFlagsFrameFour = 3, kCheapestFirstFlagsFrameFour = 4 + kFlagsFrameFour;  // encodeGeometryTree's keys
-        const auto bits = treeTrials.pickBits.find(kFlagsFrameFour);
-        const auto coded = treeTrials.coded.find(kCheapestFirstFlagsFrameFour);
+        // The tree over the 4 nearest, choices as flags, the frame on: the estimates' own coding.
+        const auto bits = treeTrials.pickBits.find(treeBitsKey(0, true, true));
+        const auto coded = treeTrials.coded.find(sectionKey(true, 0, true, true));
         if (bits != treeTrials.pickBits.end() && coded != treeTrials.coded.end() && !coded->second.bytes.empty()) {
             section.rival.pickBits = std::move(bits->second);
             section.rival.bits = 8.0 * double(coded->second.bytes.size());
@@ -973,43 +974,46 @@ constexpr double kRefineEstimateSlack = 0.015;
 // attempt): SIZE_MAX is returned as soon as the estimate must exceed it.
 //
 // The refinement comes first, over the input's numbering (it visits the
-// vertices as the triangles reach them: numbered in the coarse tree's
-// order, as until the twenty-fifth session, it took the same bytes on
-// every corpus mesh), so that the coarse tree knows the room left to it.
-// With a rival (the full grid's tree, TreeRival), the coarse tree is then
-// given up once it clearly cannot fit that room (TreeBudget): until then
-// venus grew both coarse trees to the end for estimates that missed by 6
-// and 11 %. Where the tree is not given up the estimate is the same figure.
+// vertices as the triangles reach them, then those in no triangle in index
+// order: numbered in the coarse tree's order, as until the twenty-fifth
+// session, it took the same bytes on every corpus mesh), so that the
+// coarse tree knows the room left to it. With a rival (the full grid's
+// tree, TreeRival), the coarse tree is then given up once it clearly
+// cannot fit the room budgetAbove leaves (TreeBudget): until then venus
+// grew both coarse trees to the end for estimates that missed by 6 and
+// 11 %. Where the tree is not given up the estimate is the same figure.
+// budgetAbove is the same bound whatever the threads (the estimates
+// beside the tree's attempt know no looser one), so that which trees are
+// given up, and so the file, does not depend on them.
 //
 // How far the coarse tree's extrapolated section may run over its room
 // before it is given up, as a share of the rival's section. On the
-// corpus's meshes of 16,384 vertices or more, from 4/16 of the vertices on,
-// the extrapolation came within 1.5 % of the end's figure where it was
-// above it (dinosaur-24k with 2 low bits); the trees given up (venus,
-// nefertiti-50k, tower-holes, pinocchio, dragon-res3, falconstatue-boundary,
-// cycloidal, both low-bit counts each) ran 4.9 to 39 % over at 4/16;
-// feline's, whose estimates miss by less, are grown to the end.
+// corpus's meshes of 8,192 vertices or more, from 4/16 of the vertices on,
+// the extrapolation came within 1.6 % of the end's figure where it was
+// above it (mannequin with 4 low bits; dinosaur-24k with 2, 1.5 %); the
+// trees given up (venus, nefertiti-50k, tower-holes, pinocchio,
+// dragon-res3, falconstatue-boundary, cycloidal, chinese-dragon-10k,
+// rocker-arm, venus-lres, both low-bit counts each) ran 4.0 to 39 % over
+// at 4/16; feline's, whose estimates miss by less, are grown to the end.
 constexpr double kEstimateGiveUpMargin = 0.03;
 size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::vector<uint32_t>& triangles, int bits,
                               int lowBits, NeighbourIndex index, GeometryTreeTrials& trials, double skipAbove,
-                              const TreeRival* rival) {
+                              double budgetAbove, const TreeRival* rival) {
     if (skipAbove < 0) return SIZE_MAX;
     const Refinement refinement =
         encodeRefinement(quantized, lowBits, triangles, skipAbove < double(SIZE_MAX / 2) ? size_t(skipAbove) : SIZE_MAX);
     if (refinement.overBudget) return SIZE_MAX;
     const double room = skipAbove - double(refinement.bytes.size());
     TreeBudget budget;
-    if (rival && !rival->pickBits.empty()) {
+    const bool budgeted = rival && !rival->pickBits.empty();
+    if (budgeted) {
         budget.rivalPickBits = &rival->pickBits;
         budget.rivalBits = rival->bits;
-        budget.bits = 8.0 * room;
+        budget.bits = 8.0 * (budgetAbove - double(refinement.bytes.size()));
         budget.margin = kEstimateGiveUpMargin * rival->bits;
-        trials.budget = &budget;
     }
-    struct BudgetCleared {  // the attempt grows its own trees on these trials, unbudgeted
-        GeometryTreeTrials& trials;
-        ~BudgetCleared() { trials.budget = nullptr; }
-    } cleared{trials};
+    // The attempt grows its own trees on these trials, unbudgeted.
+    const BudgetScope scope(trials, budgeted ? &budget : nullptr);
     const GeometryEncoding tree =
         encodeGeometryTree(coarsenGrid(quantized, lowBits), bits - lowBits, index, GeometryTree::CheapestFirst,
                            ChoiceCoding::Flags, FrameUse::On, &trials);
@@ -1064,8 +1068,9 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     const TreeRival rival = std::move(section.rival);
     auto estimate = [&](Estimate& e, double treeTotal) {
         const double skipAbove = double(treeGeometry) + slack - minimumGain * treeTotal;
+        const double budgetAbove = double(treeGeometry) + slack - minimumGain * double(treeGeometry);
         e.bytes = refineGeometryEstimate(prepared.quantized, mesh.triangles, options.bits, e.lowBits, options.index,
-                                         e.trials, skipAbove, &rival);
+                                         e.trials, skipAbove, budgetAbove, &rival);
         e.growth = e.trials.nearest && e.trials.nearest->spacing <= kCrowdedCoarseSpacing
                        ? kCrowdedConnectivityGrowth * double(mesh.vertexCount()) / 8.0
                        : 0.0;

@@ -795,16 +795,19 @@ GrownTree cheapestFirstTree(const std::vector<int32_t>& grid, int bits, const Ne
     grown.order.reserve(n);
     grown.childCount.assign(n, 0);
     if (pickBits) pickBits->assign(n, 0.0f);
+    if (budget && (!budget->rivalPickBits || budget->rivalPickBits->size() != n))
+        throw Error(ErrorKind::Internal, "internal error: a geometry tree's budget is for another grid");
     // What the vertices coded so far cost here and in the budget's rival;
-    // `picked` tells whether the budget gives the tree up.
+    // `picked` tells whether the budget gives the tree up (never once every
+    // vertex is coded: the section's own size then decides).
     double spent = 0, rivalSpent = 0;
-    const size_t step = (n + kBudgetSteps - 1) / kBudgetSteps;
+    const size_t step = std::max<size_t>(1, (n + kBudgetSteps - 1) / kBudgetSteps);
     auto picked = [&](uint32_t vertex, double cost, uint32_t coded) {
         if (pickBits) (*pickBits)[vertex] = float(cost);
         if (!budget) return false;
         spent += cost;
         rivalSpent += double((*budget->rivalPickBits)[vertex]);
-        if (coded % step != 0 || coded / step < kBudgetFromStep) return false;
+        if (coded % step != 0 || coded / step < kBudgetFromStep || coded == n) return false;
         const double extrapolated = budget->rivalBits + (spent - rivalSpent) * double(n) / double(coded);
         return extrapolated > budget->bits + budget->margin;
     };
@@ -1014,9 +1017,13 @@ constexpr size_t kForestBesideFromVertices = 16384;
 // FourUnlessRegular (TreeNeighbours): the other counts' trees are given up
 // where their extrapolated sections run this share of the tree over the 4
 // nearest past the best section so far (as refine's estimates are,
-// encoder.cpp); on larger meshes they are grown to the end.
+// encoder.cpp).
 constexpr double kRegularCountsMargin = 0.03;
-constexpr size_t kPickBitsForRegularUpTo = size_t(1) << 18;
+// Above this many vertices FourUnlessRegular is Four: the search for 16
+// nearest, the wider graphs and the pick bits would add to the encoder's
+// peak memory, measured there (igea x4, docs/speed.md), and the vertex
+// section is then coded beside the early connectivity (encoder.cpp).
+constexpr size_t kRegularUpToVertices = size_t(1) << 18;
 
 // Two trees, each with the choice coded both ways, the smallest section
 // kept (the decoder reads any the same way): the cheapest-first tree wins
@@ -1087,10 +1094,11 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         if (uncoded) forestBuilding = startBeside(buildSpanningForest);
     }
     // Codes one way, unless an earlier call did.
-    // A section given up on (empty: codeTree) is kept as such, and is never
-    // the best; a call that asks for that tree alone codes it again.
+    // A section given up on (empty: a spanning tree against a cheapest-first
+    // one, codeTree, or a tree held to a budget) is kept as such, and is
+    // never the best; a call that asks for that tree alone codes it again.
     auto trial = [&](bool cheapestFirst, int count, bool flagChoices, bool frame, auto codeOneWay) -> size_t {
-        const int key = 8 * count + (cheapestFirst ? 4 : 0) + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
+        const int key = sectionKey(cheapestFirst, count, flagChoices, frame);
         auto found = trials->coded.find(key);
         if (found != trials->coded.end() && found->second.bytes.empty() && which != GeometryTree::Smaller) {
             trials->coded.erase(found);
@@ -1104,10 +1112,11 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
     // FourUnlessRegular holds the other counts' trees to the best section
     // so far (TreeBudget), against the tree over the 4 nearest coded the
     // same way: what each vertex cost when picked there is kept for that
-    // (up to kPickBitsForRegularUpTo vertices: 4 bytes a vertex).
+    // (4 bytes a vertex), in the trials where they keep them, else here.
     const bool pickBitsForRegular = treeNeighbours == TreeNeighbours::FourUnlessRegular &&
-                                    which == GeometryTree::Smaller && grid.size() / 3 <= kPickBitsForRegularUpTo;
+                                    which == GeometryTree::Smaller && grid.size() / 3 <= kRegularUpToVertices;
     std::map<int, std::vector<float>> ownPickBits;
+    std::map<int, std::vector<float>>& pickBitsKept = trials->keepPickBits ? trials->pickBits : ownPickBits;
     auto cheapestFirst = [&](int count, bool flagChoices, bool frame) {
         NeighbourGraph& graph = graphs[count];
         if (graph.offset.empty()) graph = symmetricGraph(*trials->nearest, kTreeNeighbourCounts[count]);
@@ -1117,14 +1126,12 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         // to three times its size while it moved.
         log.reserve(16 * (grid.size() / 3));
         GeometryEncoding coded;
-        const int bitsKey = 4 * count + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
-        std::vector<float>* pickBits = trials->keepPickBits ? &trials->pickBits[bitsKey]
-                                       : count == 0 && pickBitsForRegular ? &ownPickBits[bitsKey]
-                                                                          : nullptr;
+        const int bitsKey = treeBitsKey(count, flagChoices, frame);
+        const bool keepPicks = count == 0 && (trials->keepPickBits || pickBitsForRegular);
         GrownTree grown = cheapestFirstTree(grid, bits, graph, cellBits, flagChoices, frame, log, coded.framedResiduals,
-                                            trials->budget, pickBits);
+                                            trials->budget, keepPicks ? &pickBitsKept[bitsKey] : nullptr);
         if (grown.givenUp) {
-            trials->pickBits.erase(bitsKey);
+            if (keepPicks) pickBitsKept.erase(bitsKey);
             return GeometryEncoding();
         }
         coded.order = std::move(grown.order);
@@ -1137,12 +1144,11 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         if (spanning.start.empty()) buildSpanningForest();
         // Against the cheapest-first tree coded the same way, where it was
         // (over the 4 nearest, or the chosen count where that coded smaller).
-        const int way = (flagChoices ? 2 : 0) + (frame ? 1 : 0);
-        auto rival = trials->coded.find(4 + way);
-        auto rivalBits = trials->vertexBits.find(way);
+        auto rival = trials->coded.find(sectionKey(true, 0, flagChoices, frame));
+        auto rivalBits = trials->vertexBits.find(treeBitsKey(0, flagChoices, frame));
         if (chosen > 0) {
-            const auto other = trials->coded.find(8 * chosen + 4 + way);
-            const auto otherBits = trials->vertexBits.find(4 * chosen + way);
+            const auto other = trials->coded.find(sectionKey(true, chosen, flagChoices, frame));
+            const auto otherBits = trials->vertexBits.find(treeBitsKey(chosen, flagChoices, frame));
             if (other != trials->coded.end() && otherBits != trials->vertexBits.end() &&
                 (rival == trials->coded.end() || other->second.bytes.size() < rival->second.bytes.size())) {
                 rival = other;
@@ -1189,10 +1195,11 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         }
         if (which != GeometryTree::CheapestFirst) trial(false, 0, way.first, way.second, spanningTree);
     }
-    bool regular = false;  // FourUnlessRegular: a spanning tree coded to the end
-    if (treeNeighbours == TreeNeighbours::FourUnlessRegular && which == GeometryTree::Smaller) {
+    // FourUnlessRegular: a spanning tree coded to the end (a regular mesh).
+    bool regular = false;
+    if (pickBitsForRegular) {
         for (const auto& way : ways) {
-            const auto found = trials->coded.find((way.first ? 2 : 0) + (way.second ? 1 : 0));
+            const auto found = trials->coded.find(sectionKey(false, 0, way.first, way.second));
             regular |= found != trials->coded.end() && !found->second.bytes.empty();
         }
         if (regular) {
@@ -1211,41 +1218,41 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         size_t least = SIZE_MAX;
         for (const auto& way : ways)
             for (int c = 0; c < countsTried; ++c) {
-                const auto found = trials->coded.find(8 * c + 4 + (way.first ? 2 : 0) + (way.second ? 1 : 0));
+                const auto found = trials->coded.find(sectionKey(true, c, way.first, way.second));
                 if (found != trials->coded.end() && !found->second.bytes.empty() && found->second.bytes.size() < least) {
                     least = found->second.bytes.size();
                     bestWay = way;
                 }
             }
+        // A regular mesh's other counts, against the tree over the 4 nearest
+        // coded the best way (a refine attempt's coarse tree over the 4
+        // nearest, grown by its estimate, kept no pick bits: there they
+        // are grown to the end).
         TreeBudget budget;
-        struct BudgetCleared {
-            GeometryTreeTrials* trials;
-            bool set = false;
-            ~BudgetCleared() {
-                if (set) trials->budget = nullptr;
-            }
-        } cleared{trials};
-        if (regular && !trials->budget) {
-            const int key = (bestWay.first ? 2 : 0) + (bestWay.second ? 1 : 0);
-            const auto kept = trials->keepPickBits ? trials->pickBits.find(key) : ownPickBits.find(key);
-            const auto rival = trials->coded.find(4 + key);
-            if (kept != (trials->keepPickBits ? trials->pickBits.end() : ownPickBits.end()) &&
-                rival != trials->coded.end() && !rival->second.bytes.empty() && best) {
+        bool budgeted = false;
+        if (regular && !trials->budget && best) {
+            const auto kept = pickBitsKept.find(treeBitsKey(0, bestWay.first, bestWay.second));
+            const auto rival = trials->coded.find(sectionKey(true, 0, bestWay.first, bestWay.second));
+            if (kept != pickBitsKept.end() && rival != trials->coded.end() && !rival->second.bytes.empty()) {
                 budget.rivalPickBits = &kept->second;
                 budget.rivalBits = 8.0 * double(rival->second.bytes.size());
                 budget.bits = 8.0 * double(best->bytes.size());
                 budget.margin = kRegularCountsMargin * budget.rivalBits;
-                trials->budget = &budget;
-                cleared.set = true;
+                budgeted = true;
             }
         }
+        const BudgetScope scope(*trials, budgeted ? &budget : nullptr);
         if (othersEveryWay)
             grow(kTreeNeighbourCountsTried - 1, bestWay);
         else
             growOthers(bestWay, least, countsTried);
     }
     if (forestBuilding.valid()) forestBuilding.get();  // every spanning trial was coded before
-    if (!best) return GeometryEncoding();  // every tree given up (a budget)
+    if (!best) {  // every tree given up: only a budget may do that
+        if (!trials->budget)
+            throw Error(ErrorKind::Internal, "internal error: no geometry tree was coded to the end");
+        return GeometryEncoding();
+    }
     return trials == &own ? std::move(*best) : *best;
 }
 

@@ -43,14 +43,17 @@ enum class FrameUse { Smaller, On, Off };
 // over the 4 nearest is grown under every way in each case, so no section
 // is larger than with Four. FourUnlessRegular: as Four, and as Several where
 // a spanning tree was coded to the end (given up nowhere: a regular mesh,
-// as CAD meshes are), the neighbours then searched again for 16.
+// as CAD meshes are), the neighbours then searched again for 16; on
+// meshes of up to 262,144 vertices (larger ones stay with Four: the wider
+// search and its graphs would add to the encoder's peak memory).
 enum class TreeNeighbours { Four, Several, SeveralEveryWay, FourUnlessRegular };
 
 struct NearestNeighbours;
 
 // What a cheapest-first tree is held to while it grows (refine's estimate,
-// encoder.cpp): another tree over the same vertices, coded earlier, and the
-// section size this one must stay under. After each sixteenth of its
+// encoder.cpp; FourUnlessRegular's other counts): another tree over the
+// same vertices, coded earlier, and the section size this one must stay
+// under. After each sixteenth of its
 // vertices from the fourth on, the tree extrapolates its size from what
 // its vertices cost so far against what the same vertices cost in the
 // rival (each as priced when it was picked: residual and choice, child
@@ -63,13 +66,26 @@ struct TreeBudget {
     double margin = 0;
 };
 
+// The keys of GeometryTreeTrials' maps: a section by tree, neighbour count
+// (an index into the counts tried: 0 is the 4 nearest), choice coding and
+// frame; a cheapest-first tree's per-vertex figures by the same less the
+// tree.
+inline int treeBitsKey(int countIndex, bool flagChoices, bool frame) {
+    return 4 * countIndex + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
+}
+inline int sectionKey(bool cheapestFirst, int countIndex, bool flagChoices, bool frame) {
+    return 8 * countIndex + (cheapestFirst ? 4 : 0) + (flagChoices ? 2 : 0) + (frame ? 1 : 0);
+}
+
 // What encodeGeometryTree has worked out for one grid: its near neighbours
 // and every section it coded, by tree, neighbour count, choice coding and
 // frame. An encoder that codes the same grid twice (refine's estimate, then
 // refine's attempt on the same coarse grid) passes the same trials to both,
 // and nothing is grown or coded twice (the neighbours aside: a call with
 // several neighbour counts after one with TreeNeighbours::Four searches
-// 16 nearest again); the section kept is the one a single call would keep.
+// 16 nearest again); the section kept is the one a single call would keep,
+// but where a budget gave a tree up (kept as an empty section: a later
+// call with a budget does not grow it again).
 struct GeometryTreeTrials {
     size_t vertexCount = 0;  // of the grid they are for (checked)
     int bits = 0;
@@ -82,13 +98,30 @@ struct GeometryTreeTrials {
     // The cheapest-first tree's neighbour count, once chosen (0: not yet).
     int treeNeighbours = 0;
     // With keepPickBits, what each vertex (by input index) cost when the
-    // cheapest-first trees picked it (TreeBudget), by the keys of
-    // vertexBits: a rival for a later tree's budget.
+    // cheapest-first trees over the 4 nearest picked it (TreeBudget), by
+    // the keys of vertexBits: a rival for a later tree's budget.
     bool keepPickBits = false;
     std::map<int, std::vector<float>> pickBits;
     // Where set, every cheapest-first tree grown for these trials is held
     // to it; one given up is kept as an empty section.
     const TreeBudget* budget = nullptr;
+};
+
+// Holds trials to a budget for its lifetime (none: leaves them as they are).
+class BudgetScope {
+public:
+    BudgetScope(GeometryTreeTrials& trials, const TreeBudget* budget) : trials_(trials), set_(budget != nullptr) {
+        if (set_) trials_.budget = budget;
+    }
+    ~BudgetScope() {
+        if (set_) trials_.budget = nullptr;
+    }
+    BudgetScope(const BudgetScope&) = delete;
+    BudgetScope& operator=(const BudgetScope&) = delete;
+
+private:
+    GeometryTreeTrials& trials_;
+    bool set_;
 };
 
 // Codes the grid with each tree, choice coding and frame asked for and

@@ -4,8 +4,9 @@
 Usage: tools/bench/encode_cpu.py BEFORE AFTER [--runs 3] [--meshes DIR]
                                  [-- ENCODE OPTIONS...]
 
-Runs `BINARY encode MESH OUT.drm` for every mesh of DIR (default
-../shared/meshes), the binaries in turn (BEFORE AFTER BEFORE AFTER ...,
+Runs `BINARY encode MESH OUT.drm [ENCODE OPTIONS]` for every mesh of DIR
+(default: the corpus, shared/meshes beside the repository), the binaries
+in turn (BEFORE AFTER BEFORE AFTER ...,
 so that the machine's drift falls on both), and takes each run's CPU time,
 user and system, of the finished process (the whole process: reading the
 mesh and writing the file included). Prints each mesh's median for each
@@ -42,8 +43,10 @@ def face_count(path):
 
 def cpu_seconds(command):
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+    run = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if run.returncode != 0:
+        sys.exit("failed (exit %d): %s\n%s" % (run.returncode, " ".join(command), run.stderr.decode(errors="replace")))
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
@@ -52,9 +55,13 @@ def main():
     parser.add_argument("before")
     parser.add_argument("after")
     parser.add_argument("--runs", type=int, default=3)
-    parser.add_argument("--meshes", default=os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "meshes"))
-    parser.add_argument("options", nargs="*", help="encode options, after --")
-    args = parser.parse_args()
+    repository = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+    parser.add_argument("--meshes", default=os.path.join(os.path.dirname(repository), "shared", "meshes"))
+    # What follows the first -- goes to `drm encode` as it is.
+    argv = sys.argv[1:]
+    options = argv[argv.index("--") + 1:] if "--" in argv else []
+    args = parser.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
+    args.options = options
     meshes = sorted(os.path.join(args.meshes, m) for m in os.listdir(args.meshes) if m.endswith(".ply"))
     if not meshes:
         sys.exit("no .ply meshes in " + args.meshes)
