@@ -384,36 +384,38 @@ TEST(GeometryTree, ABudgetGivesUpATreeThatCannotFitIt) {
         EXPECT_LT(picked, rivalBits);
         EXPECT_GT(picked, 0.7 * rivalBits);
 
-        TreeBudget own{&pickBits, rivalBits, rivalBits, 0.001 * rivalBits};
+        // The cheapest-first tree (flags, frame) of `points` held to `budget`.
+        auto budgeted = [](const std::vector<int32_t>& points, int pointBits, const TreeBudget* budget,
+                           GeometryTreeTrials& trials) {
+            const BudgetScope scope(trials, budget);
+            return encodeGeometryTree(points, pointBits, NeighbourIndex::Auto, GeometryTree::CheapestFirst,
+                                      ChoiceCoding::Flags, FrameUse::On, &trials);
+        };
+        const TreeBudget own{&pickBits, rivalBits, rivalBits, 0.001 * rivalBits};
         GeometryTreeTrials again;
-        again.budget = &own;
-        EXPECT_EQ(encodeGeometryTree(grid, 12, NeighbourIndex::Auto, GeometryTree::CheapestFirst, ChoiceCoding::Flags,
-                                     FrameUse::On, &again)
-                      .bytes,
-                  rival.bytes);
+        EXPECT_EQ(budgeted(grid, 12, &own, again).bytes, rival.bytes);
 
         const std::vector<int32_t> coarse = coarsenGrid(grid, 2);
-        const GeometryEncoding unbudgeted = encodeGeometryTree(coarse, 10, NeighbourIndex::Auto, GeometryTree::CheapestFirst,
-                                                               ChoiceCoding::Flags, FrameUse::On);
+        GeometryTreeTrials plain;
+        const GeometryEncoding unbudgeted = budgeted(coarse, 10, nullptr, plain);
         const double coarseBits = 8.0 * double(unbudgeted.bytes.size());
         ASSERT_LT(coarseBits, 0.9 * rivalBits);
-        TreeBudget tight{&pickBits, rivalBits, 0.5 * coarseBits, 0.0};
+        const TreeBudget tight{&pickBits, rivalBits, 0.5 * coarseBits, 0.0};
         GeometryTreeTrials givenUp;
-        givenUp.budget = &tight;
-        const GeometryEncoding none = encodeGeometryTree(coarse, 10, NeighbourIndex::Auto, GeometryTree::CheapestFirst,
-                                                         ChoiceCoding::Flags, FrameUse::On, &givenUp);
-        EXPECT_TRUE(none.bytes.empty());
+        EXPECT_TRUE(budgeted(coarse, 10, &tight, givenUp).bytes.empty());
+        EXPECT_EQ(givenUp.budget, nullptr);  // the scope is over
         ASSERT_EQ(givenUp.coded.size(), 1u);
         EXPECT_TRUE(givenUp.coded.begin()->second.bytes.empty());
         EXPECT_TRUE(givenUp.vertexBits.empty());
 
-        TreeBudget roomy{&pickBits, rivalBits, 2.0 * coarseBits, 0.0};
+        const TreeBudget roomy{&pickBits, rivalBits, 2.0 * coarseBits, 0.0};
         GeometryTreeTrials kept;
-        kept.budget = &roomy;
-        EXPECT_EQ(encodeGeometryTree(coarse, 10, NeighbourIndex::Auto, GeometryTree::CheapestFirst, ChoiceCoding::Flags,
-                                     FrameUse::On, &kept)
-                      .bytes,
-                  unbudgeted.bytes);
+        EXPECT_EQ(budgeted(coarse, 10, &roomy, kept).bytes, unbudgeted.bytes);
+        // A budget for another grid is refused.
+        const std::vector<float> shorter(pickBits.begin(), pickBits.end() - 1);
+        const TreeBudget wrong{&shorter, rivalBits, 2.0 * coarseBits, 0.0};
+        GeometryTreeTrials refused;
+        EXPECT_THROW(budgeted(coarse, 10, &wrong, refused), Error);
     }
 }
 
