@@ -379,9 +379,12 @@ Split splitIndex(const NumberedMesh& numbered, const std::vector<uint32_t>& smal
     for (size_t i = 1; i <= n; ++i) below[i] += below[i - 1];  // faces whose smallest vertex lies below i
     for (size_t f = 0; f < faces; ++f)
         for (int k = 0; k < 3; ++k) {
+            // Each interior edge once, from the side where it runs up (a
+            // boundary edge, met from one side only, is on no seam).
             const uint32_t u = t[3 * f + k], w = t[3 * f + (k + 1) % 3];
+            if (u > w) continue;
             const uint32_t other = topology.faceOf(w, u);
-            if (other == kNoIndex || other < f) continue;  // each interior edge once
+            if (other == kNoIndex) continue;
             const uint32_t a = std::min(smallest[f], smallest[other]), b = std::max(smallest[f], smallest[other]);
             ++seamChange[a + 1];  // on the seam for m in a + 1 .. b
             --seamChange[b + 1];

@@ -12,14 +12,18 @@ namespace drm {
 PredictorVotes countPredictorVotes(const std::vector<uint32_t>& t, size_t vertexCount, const MeshTopology& topology,
                                    const std::vector<int32_t>& grid) {
     const size_t faceCount = t.size() / 3;
-    // Squared distance from each vertex to its nearest neighbour in the mesh.
+    // Squared distance from each vertex to its nearest neighbour in the
+    // mesh, over every face's edges: read from each vertex's own edges out
+    // (the same edges; in vertex order the far ends lie near, where the
+    // faces in input order sent each update anywhere).
     std::vector<double> nearestNeighbour2(vertexCount, std::numeric_limits<double>::infinity());
-    for (size_t c = 0; c < t.size(); ++c) {
-        const uint32_t a = t[c], b = t[c - c % 3 + (c + 1) % 3];
-        const double d2 = norm2(gridPoint(grid, a) - gridPoint(grid, b));
-        nearestNeighbour2[a] = std::min(nearestNeighbour2[a], d2);
-        nearestNeighbour2[b] = std::min(nearestNeighbour2[b], d2);
-    }
+    for (size_t a = 0; a < vertexCount; ++a)
+        for (uint32_t e = topology.start[a]; e < topology.start[a + 1]; ++e) {
+            const uint32_t b = topology.out[e].to;
+            const double d2 = norm2(gridPoint(grid, uint32_t(a)) - gridPoint(grid, b));
+            nearestNeighbour2[a] = std::min(nearestNeighbour2[a], d2);
+            nearestNeighbour2[b] = std::min(nearestNeighbour2[b], d2);
+        }
 
     // Each face votes once, through one of its edges (the k-th for face
     // number k modulo 3), with its third vertex as the opposite and the

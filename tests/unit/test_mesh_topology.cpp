@@ -2,9 +2,11 @@
 // search of the faces: every edge's face and apex, a hub vertex whose many
 // edges are searched by halving, and the message for a directed edge in two
 // faces, which names the pair met first face by face; the table built
-// without the checks is the same.
+// without the checks is the same; and the message for a vertex of two fans
+// or more, which names the vertex and face a union of corners meets first.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -89,6 +91,68 @@ TEST(MeshTopology, ADirectedEdgeInTwoFacesIsNamedAsMetFaceByFace) {
     EXPECT_EQ(topologyProblem(three, 7, &topology),
               "face 2 (1, 2, 4) and face 1 (1, 2, 3) both contain the directed edge 1->2: "
               "the mesh is non-manifold or inconsistently oriented there");
+}
+
+// The message a union of corners gives: corners at one vertex joined when
+// their faces share an edge there, the first corner (face by face) whose
+// vertex's first corner lies in another set named. The check walks each
+// vertex's own fan instead; both must name the same vertex and face.
+std::string twoFansBySearch(const std::vector<uint32_t>& t, size_t vertexCount) {
+    std::vector<uint32_t> set(t.size());
+    for (size_t c = 0; c < t.size(); ++c) set[c] = uint32_t(c);
+    auto root = [&](uint32_t c) {
+        while (set[c] != c) c = set[c];
+        return c;
+    };
+    for (size_t f = 0; f < t.size() / 3; ++f)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = t[3 * f + k], next = t[3 * f + (k + 1) % 3];
+            const uint32_t g = faceBySearch(t, next, v);
+            if (g == kNoIndex) continue;
+            for (int j = 0; j < 3; ++j)
+                if (t[3 * size_t(g) + j] == v) set[root(uint32_t(3 * f + k))] = root(uint32_t(3 * g + j));
+        }
+    std::vector<uint32_t> fanOf(vertexCount, kNoIndex);
+    for (size_t c = 0; c < t.size(); ++c) {
+        const uint32_t v = t[c];
+        if (fanOf[v] == kNoIndex) fanOf[v] = root(uint32_t(c));
+        else if (fanOf[v] != root(uint32_t(c))) {
+            const size_t f = c / 3;
+            return "vertex " + std::to_string(v) + " is non-manifold: its faces form more than one fan (first seen at face " +
+                   std::to_string(f) + " (" + std::to_string(t[3 * f]) + ", " + std::to_string(t[3 * f + 1]) + ", " +
+                   std::to_string(t[3 * f + 2]) + "))";
+        }
+    }
+    return "";
+}
+
+TEST(MeshTopology, AVertexOfTwoFansIsNamedAsMetFaceByFace) {
+    const std::vector<std::vector<uint32_t>> meshes = {
+        // Two triangles touching at vertex 0 (a bowtie).
+        {0, 1, 2, 0, 3, 4},
+        // Vertex 0's second fan met before its first is closed: face 1
+        // lies in another fan than face 0, though face 2 joins face 0.
+        {0, 1, 2, 0, 3, 4, 0, 2, 5},
+        // Two closed cones sharing their apex 0: neither fan has an end.
+        {0, 1, 2, 0, 2, 3, 0, 3, 1, 0, 4, 5, 0, 5, 6, 0, 6, 4},
+        // A closed cone and an open fan at 0, and a later vertex of two
+        // fans (7) whose corner comes first.
+        {0, 1, 2, 0, 2, 3, 7, 8, 9, 0, 3, 1, 7, 10, 11, 0, 4, 5, 0, 5, 6},
+        // Three fans around a hub of more than 16 edges (searched by halving).
+        {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 6, 0, 6, 7, 0, 7, 8, 0, 8, 9, 0, 9, 10, 0, 11, 12, 0, 12, 13,
+         0, 13, 14, 0, 14, 15, 0, 15, 16, 0, 16, 17, 0, 17, 18, 0, 18, 19, 0, 20, 21},
+    };
+    for (const std::vector<uint32_t>& t : meshes) {
+        const size_t vertexCount = *std::max_element(t.begin(), t.end()) + 1;
+        const std::string expected = twoFansBySearch(t, vertexCount);
+        ASSERT_NE(expected, "");
+        MeshTopology topology;
+        EXPECT_EQ(topologyProblem(t, vertexCount, &topology), expected);
+    }
+    // One fan, open or closed, passes.
+    MeshTopology topology;
+    EXPECT_EQ(topologyProblem(std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 0, 3, 4}, 5, &topology), "");
+    EXPECT_EQ(topologyProblem(std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 0, 3, 1}, 4, &topology), "");
 }
 
 }  // namespace
