@@ -372,16 +372,16 @@ struct Split {
 };
 Split splitIndex(const NumberedMesh& numbered, const std::vector<uint32_t>& smallest) {
     const size_t faces = smallest.size(), n = numbered.vertexCount;
-    const std::vector<uint32_t>& t = numbered.triangles;
     const MeshTopology& topology = numbered.topology;
     std::vector<int64_t> below(n + 1, 0), seamChange(n + 2, 0);
     for (uint32_t v : smallest) ++below[v + 1];
     for (size_t i = 1; i <= n; ++i) below[i] += below[i - 1];  // faces whose smallest vertex lies below i
-    for (size_t f = 0; f < faces; ++f)
-        for (int k = 0; k < 3; ++k) {
-            // Each interior edge once, from the side where it runs up (a
-            // boundary edge, met from one side only, is on no seam).
-            const uint32_t u = t[3 * f + k], w = t[3 * f + (k + 1) % 3];
+    // Each interior edge once, from the side where it runs up (a boundary
+    // edge, met from one side only, is on no seam), in vertex order: the
+    // edge back is then looked up among near vertices' edges.
+    for (uint32_t u = 0; u < n; ++u)
+        for (uint32_t e = topology.start[u]; e < topology.start[u + 1]; ++e) {
+            const uint32_t w = topology.out[e].to, f = topology.out[e].face;
             if (u > w) continue;
             const uint32_t other = topology.faceOf(w, u);
             if (other == kNoIndex) continue;
@@ -423,22 +423,19 @@ struct SplitFaces {
 bool splitFaces(const NumberedMesh& numbered, bool whateverItCosts, SplitFaces& parts) {
     const std::vector<uint32_t>& t = numbered.triangles;
     const size_t faces = t.size() / 3, n = numbered.vertexCount;
-    Split at;
-    {
-        std::vector<uint32_t> smallest(faces);
-        for (size_t f = 0; f < faces; ++f) smallest[f] = smallestVertex(t, uint32_t(f));
-        at = splitIndex(numbered, smallest);
-        if (!whateverItCosts && (!at.even || double(at.seamEdges) > kLongestSeamPerFace * double(faces)))
-            return false;  // a long seam, or parts too uneven to gain much from a second thread
-        for (uint32_t v : smallest) parts.firstFaces += v < at.at ? 1 : 0;
-    }
+    std::vector<uint32_t> smallest(faces);
+    for (size_t f = 0; f < faces; ++f) smallest[f] = smallestVertex(t, uint32_t(f));
+    const Split at = splitIndex(numbered, smallest);
+    if (!whateverItCosts && (!at.even || double(at.seamEdges) > kLongestSeamPerFace * double(faces)))
+        return false;  // a long seam, or parts too uneven to gain much from a second thread
+    for (uint32_t v : smallest) parts.firstFaces += v < at.at ? 1 : 0;
     const uint32_t m = parts.split = at.at;
     parts.secondGrid.assign(numbered.decodedGrid.begin() + 3 * size_t(m), numbered.decodedGrid.end());
     // Part 2's vertices with two fans or more: as many of their part 2
     // edges out without a part 2 face on the other side (each fan that is
     // not closed ends on one).
     const MeshTopology& topology = numbered.topology;
-    auto inSecond = [&](uint32_t face) { return face != kNoIndex && smallestVertex(t, face) >= m; };
+    auto inSecond = [&](uint32_t face) { return face != kNoIndex && smallest[face] >= m; };
     for (size_t v = m; v < n; ++v) {
         int open = 0;
         for (uint32_t e = topology.start[v]; e < topology.start[v + 1]; ++e)
