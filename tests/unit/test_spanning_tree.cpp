@@ -2,7 +2,8 @@
 // chunks of sorted edges (spanning_tree.cpp); it must be the very forest a
 // full sort gives, ties included: points on a coarse grid (many equal
 // lengths), clusters far apart (a forest, not a tree), and sizes on both
-// sides of the chunk.
+// sides of the chunk; edges sorted as one 64-bit number each, or, where
+// the longest does not fit beside its ends, as triples.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -91,6 +92,26 @@ TEST(SpanningForest, IsTheForestOfAFullSortWithTiesAndSeveralComponents) {
             for (const auto& e : found)
                 EXPECT_EQ(e.first % size_t(clusters), e.second % size_t(clusters)) << "clusters far apart stay apart";
         }
+    }
+}
+
+// Clusters 2^20 apart on a 21-bit grid: squared lengths need 64 bits, but
+// the graph's edges are short, and sort as one number each with their ends
+// (13 bits each for 6,000 points). A lone point as far again has its nearest
+// 2^20 away: 41 bits of length do not fit beside 26 of ends, and the edges
+// sort as triples. Either way the forest is the full sort's.
+TEST(SpanningForest, LongEdgesThatDoNotFitInOneNumberSortAsTriples) {
+    for (const bool lonePoint : {false, true}) {
+        std::mt19937 rng(7);
+        std::vector<int32_t> grid;
+        for (size_t v = 0; v < 6000; ++v) {
+            const int32_t offset = int32_t(v % 2) << 20;
+            for (int c = 0; c < 3; ++c) grid.push_back(offset + int32_t(rng() % 40u));
+        }
+        if (lonePoint) grid.insert(grid.end(), {(1 << 21) - 1, (1 << 21) - 1, (1 << 21) - 1});
+        const NearestNeighbours nearest = nearestNeighbours(grid, NeighbourIndex::Grid, kNeighbours);
+        EXPECT_EQ(edgesOf(spanningForest(grid, nearest)), fullySortedForest(grid, nearest))
+            << (lonePoint ? "with" : "without") << " the lone point";
     }
 }
 
