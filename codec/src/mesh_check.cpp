@@ -15,14 +15,17 @@ std::string faceText(const std::vector<uint32_t>& t, size_t f) {
            ", " + std::to_string(t[3 * f + 2]) + ")";
 }
 
-// Where v's edge to b lies in v's list of degree edges sorted by far end;
-// degree if v has none.
+// Where a vertex's edge to b lies in its list of `degree` edges, sorted by
+// far end; degree if it has none. A few edges leave most vertices; a hub's
+// are searched by halving.
 size_t placeOf(const MeshTopology::Outgoing* first, size_t degree, uint32_t b) {
-    const MeshTopology::Outgoing* last = first + degree;
+    const MeshTopology::Outgoing* const last = first + degree;
     const MeshTopology::Outgoing* at = first;
-    if (degree > 16) at = std::lower_bound(first, last, b, [](const MeshTopology::Outgoing& e, uint32_t to) { return e.to < to; });
-    else
+    if (degree > 16) {
+        at = std::lower_bound(first, last, b, [](const MeshTopology::Outgoing& e, uint32_t to) { return e.to < to; });
+    } else {
         while (at != last && at->to < b) ++at;
+    }
     return at != last && at->to == b ? size_t(at - first) : degree;
 }
 
@@ -31,44 +34,36 @@ size_t placeOf(const MeshTopology::Outgoing* first, size_t degree, uint32_t b) {
 // and their corners, that lies outside the fan of v's first corner.
 size_t secondFanCorner(const std::vector<uint32_t>& t, size_t v, const MeshTopology::Outgoing* first, size_t degree,
                        const std::vector<uint32_t>& next) {
-    std::vector<uint32_t> parent(degree);
-    for (size_t i = 0; i < degree; ++i) parent[i] = uint32_t(i);
-    auto root = [&](uint32_t i) {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-    };
+    UnionFind fans(degree);
     for (size_t i = 0; i < degree; ++i)
-        if (next[i] != kNoIndex) parent[root(uint32_t(i))] = root(next[i]);
+        if (next[i] != kNoIndex) fans.join(uint32_t(i), next[i]);
     auto corner = [&](size_t i) {
         const size_t f = first[i].face;
         int k = 0;
         while (t[3 * f + k] != v) ++k;
         return 3 * f + size_t(k);
     };
-    size_t firstCorner = SIZE_MAX, firstFan = 0;
+    size_t firstCorner = SIZE_MAX;
+    uint32_t firstFan = 0;
     for (size_t i = 0; i < degree; ++i)
         if (corner(i) < firstCorner) {
             firstCorner = corner(i);
-            firstFan = root(uint32_t(i));
+            firstFan = fans.root(uint32_t(i));
         }
     size_t seen = SIZE_MAX;
     for (size_t i = 0; i < degree; ++i)
-        if (root(uint32_t(i)) != firstFan) seen = std::min(seen, corner(i));
+        if (fans.root(uint32_t(i)) != firstFan) seen = std::min(seen, corner(i));
     return seen;
 }
 
 }  // namespace
 
 uint32_t MeshTopology::faceOf(uint32_t a, uint32_t b) const {
-    if (start[a] == start[a + 1]) return kNoIndex;
+    const size_t degree = start[a + 1] - start[a];
+    if (degree == 0) return kNoIndex;  // (no faces at all: no array to point into)
     const Outgoing* first = out.data() + start[a];
-    const Outgoing* last = out.data() + start[a + 1];
-    // A few edges leave most vertices; a hub's are searched by halving.
-    if (last - first > 16)
-        first = std::lower_bound(first, last, b, [](const Outgoing& e, uint32_t to) { return e.to < to; });
-    for (; first != last && first->to <= b; ++first)
-        if (first->to == b) return first->face;
-    return kNoIndex;
+    const size_t at = placeOf(first, degree, b);
+    return at == degree ? kNoIndex : first[at].face;
 }
 
 uint32_t MeshTopology::apexAcross(uint32_t a, uint32_t b, uint32_t* face) const {
@@ -178,7 +173,7 @@ std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, 
     // random: the whole check took twice as long, and igea x4's encoding
     // 4 % more CPU.)
     size_t firstSeen = SIZE_MAX;  // corner order, as a face-by-face test meets it
-    uint32_t twoFans = 0;
+    uint32_t twoFanVertex = 0;
     std::vector<uint32_t> next;
     std::vector<uint8_t> reached;
     for (size_t v = 0; v < vertexCount; ++v) {
@@ -214,11 +209,11 @@ std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, 
         const size_t seen = secondFanCorner(t, v, first, degree, next);
         if (seen < firstSeen) {
             firstSeen = seen;
-            twoFans = uint32_t(v);
+            twoFanVertex = uint32_t(v);
         }
     }
     if (firstSeen != SIZE_MAX)
-        return ("vertex " + std::to_string(twoFans) + " is non-manifold: its faces form more than one fan (first seen at " +
+        return ("vertex " + std::to_string(twoFanVertex) + " is non-manifold: its faces form more than one fan (first seen at " +
                 faceText(t, firstSeen / 3) + ")");
     return std::string();
 }

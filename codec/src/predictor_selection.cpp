@@ -31,14 +31,15 @@ PredictorVotes countPredictorVotes(const std::vector<uint32_t>& t, size_t vertex
             nearestNeighbour2[b] = std::min(nearestNeighbour2[b], d2);
         }
 
-    // Each face votes once, through one of its edges (the k-th for face
-    // number k modulo 3), with its third vertex as the opposite and the
+    // Each face votes once, through one of its edges (the k-th for the
+    // voting face number k modulo 3), with its third vertex as the opposite and the
     // apex of the face across as the target: as the traversal attaches
     // each face through one edge, but without running it. The same winner
     // as the traversal's votes on all 64 corpus meshes at 12 bits, for
     // 138 M instructions instead of 363 M on igea.
     //
-    // Over kVotingFaces faces, every stride-th face votes (each face's
+    // Over kVotingFaces faces, every stride-th face votes, at most
+    // kVotingFaces and at least half as many (each face's
     // look-ups land anywhere: 3.5 % of encoding igea x4). The share of
     // parallelogram votes moved by at most 0.0011 against every face's on
     // igea x4 and on bunny, horse and crank x16, fandisk x64 (0.8 to 1.6 M

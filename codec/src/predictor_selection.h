@@ -16,8 +16,8 @@ struct PredictorVotes {
 };
 
 // For every face (over vertexCount vertices; on a mesh of over 131,072
-// faces, for faces spread evenly, about that many) not on the boundary at its
-// chosen edge, with the face's third vertex opposite that edge and the
+// faces, for faces spread evenly, at most that many and at least half as
+// many) not on the boundary at its chosen edge, with the face's third vertex opposite that edge and the
 // apex of the face across as the target, gives a vote to each base
 // predictor that lands closer to the apex than any of the apex's
 // neighbours; when neither does, the nearer one gets the vote. Ties go to

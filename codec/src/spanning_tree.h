@@ -52,7 +52,9 @@ struct Forest {
 };
 
 // Minimum spanning forest of the nearest-neighbour graph (all nearest.k
-// of each vertex), children nearest first.
+// of each vertex), children nearest first. Each row must run nearest first,
+// unfilled places (kNoVertex) last, as nearestNeighbours and nearestOnly
+// give them: the forest takes the longest edge to be a row's last.
 Forest spanningForest(const std::vector<int32_t>& grid, const NearestNeighbours& nearest);
 
 // Puts first, among each vertex's children, the one lying most nearly

@@ -138,6 +138,9 @@ TEST(MeshTopology, AVertexOfTwoFansIsNamedAsMetFaceByFace) {
         // A closed cone and an open fan at 0, and a later vertex of two
         // fans (7) whose corner comes first.
         {0, 1, 2, 0, 2, 3, 7, 8, 9, 0, 3, 1, 7, 10, 11, 0, 4, 5, 0, 5, 6},
+        // Two vertices of two fans each, whose first stray corners lie in
+        // one face (face 2): vertex 1's comes first there.
+        {0, 2, 3, 1, 4, 5, 1, 0, 6},
         // Three fans around a hub of more than 16 edges (searched by halving).
         {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 6, 0, 6, 7, 0, 7, 8, 0, 8, 9, 0, 9, 10, 0, 11, 12, 0, 12, 13,
          0, 13, 14, 0, 14, 15, 0, 15, 16, 0, 16, 17, 0, 17, 18, 0, 18, 19, 0, 20, 21},

@@ -97,21 +97,25 @@ TEST(SpanningForest, IsTheForestOfAFullSortWithTiesAndSeveralComponents) {
 
 // Clusters 2^20 apart on a 21-bit grid: squared lengths need 64 bits, but
 // the graph's edges are short, and sort as one number each with their ends
-// (13 bits each for 6,000 points). A lone point as far again has its nearest
-// 2^20 away: 41 bits of length do not fit beside 26 of ends, and the edges
-// sort as triples. Either way the forest is the full sort's.
+// (13 bits each for 6,000 points). Beside one cluster, Q just outside it and
+// P 2^19 further on: P's nearest is Q, 2^38 - 2^20 + 1 squared, its next
+// the cluster's points at 2^38 and a little more. Those 39 bits do not fit
+// beside 26 of ends: the edges sort as triples. Squeezed into 38 bits, the
+// cluster's points would come before Q and the forest would join P to one
+// of them. Either way the forest must be the full sort's.
 TEST(SpanningForest, LongEdgesThatDoNotFitInOneNumberSortAsTriples) {
-    for (const bool lonePoint : {false, true}) {
+    for (const bool farPoint : {false, true}) {
         std::mt19937 rng(7);
         std::vector<int32_t> grid;
         for (size_t v = 0; v < 6000; ++v) {
-            const int32_t offset = int32_t(v % 2) << 20;
+            const int32_t offset = farPoint ? 0 : int32_t(v % 2) << 20;
             for (int c = 0; c < 3; ++c) grid.push_back(offset + int32_t(rng() % 40u));
         }
-        if (lonePoint) grid.insert(grid.end(), {(1 << 21) - 1, (1 << 21) - 1, (1 << 21) - 1});
+        if (farPoint) grid.insert(grid.end(), {40, 20, 20, (1 << 19) + 39, 20, 20});
         const NearestNeighbours nearest = nearestNeighbours(grid, NeighbourIndex::Grid, kNeighbours);
-        EXPECT_EQ(edgesOf(spanningForest(grid, nearest)), fullySortedForest(grid, nearest))
-            << (lonePoint ? "with" : "without") << " the lone point";
+        const EdgeSet forest = edgesOf(spanningForest(grid, nearest));
+        EXPECT_EQ(forest, fullySortedForest(grid, nearest)) << (farPoint ? "with" : "without") << " the far point";
+        if (farPoint) EXPECT_EQ(forest.count({6000, 6001}), 1u) << "P joins the forest through Q";
     }
 }
 
