@@ -201,19 +201,24 @@ Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbour
         while (found < k && neighbours[v * k + found] != kNoVertex) ++found;
         if (found != 0) longest = std::max(longest, length2(uint32_t(v), neighbours[v * k + found - 1]));
     }
+    // Each kept edge once, as its ends a < b, in the order counted.
+    auto forEachKept = [&](auto take) {
+        for (size_t v = 0; v < n; ++v)
+            for (size_t j = 0; j < k; ++j)
+                if (keptBits.test(v * k + j)) {
+                    const uint32_t w = neighbours[v * k + j];
+                    take(std::min(uint32_t(v), w), std::max(uint32_t(v), w));
+                }
+    };
     const int endBits = bitLength(uint64_t(n - 1));
     const bool packed = 2 * endBits < 64 && bitLength(uint64_t(longest)) + 2 * endBits <= 64;
     std::vector<Edge<Length>> edges;
     if (packed) {
         std::vector<uint64_t> keys;
         keys.reserve(edgeCount);
-        for (size_t v = 0; v < n; ++v)
-            for (size_t j = 0; j < k; ++j) {
-                const uint32_t w = neighbours[v * k + j];
-                if (!keptBits.test(v * k + j)) continue;
-                keys.push_back(uint64_t(length2(uint32_t(v), w)) << (2 * endBits) |
-                               uint64_t(std::min<size_t>(v, w)) << endBits | uint64_t(std::max<size_t>(v, w)));
-            }
+        forEachKept([&](uint32_t a, uint32_t b) {
+            keys.push_back(uint64_t(length2(a, b)) << (2 * endBits) | uint64_t(a) << endBits | uint64_t(b));
+        });
         keptBits = Bits(0);
         const uint64_t endMask = (uint64_t(1) << endBits) - 1;
         auto endsOf = [&](uint64_t key) { return std::make_pair(uint32_t(key >> endBits & endMask), uint32_t(key & endMask)); };
@@ -225,12 +230,7 @@ Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbour
         }
     } else {
         edges.reserve(edgeCount);
-        for (size_t v = 0; v < n; ++v)
-            for (size_t j = 0; j < k; ++j) {
-                const uint32_t w = neighbours[v * k + j];
-                if (!keptBits.test(v * k + j)) continue;
-                edges.push_back({length2(uint32_t(v), w), uint32_t(std::min<size_t>(v, w)), uint32_t(std::max<size_t>(v, w))});
-            }
+        forEachKept([&](uint32_t a, uint32_t b) { edges.push_back({length2(a, b), a, b}); });
         keptBits = Bits(0);
         const auto shorter = [](const Edge<Length>& x, const Edge<Length>& y) {
             return x.length2 != y.length2 ? x.length2 < y.length2 : (x.a != y.a ? x.a < y.a : x.b < y.b);
