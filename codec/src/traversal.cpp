@@ -85,8 +85,14 @@ void Traversal::attachApex(const OpenEdge& edge, uint32_t apex) {
     triangles_.insert(triangles_.end(), {edge.vj, edge.vi, apex});
     // Left edge to the front keeps the traversal circling the current vertex
     // (paper, Section 3: 5.6% better than breadth first); right edge to the back.
-    queue_.push_front(packEdge(edge.vi, apex));
-    queue_.push_back(packEdge(apex, edge.vj));
+    if (depthFirst_) {
+        // The right edge waits just under the left one (topological_coder.h).
+        queue_.push_front(packEdge(apex, edge.vj));
+        queue_.push_front(packEdge(edge.vi, apex));
+    } else {
+        queue_.push_front(packEdge(edge.vi, apex));
+        queue_.push_back(packEdge(apex, edge.vj));
+    }
     releaseIfDone(edge.vi);
     releaseIfDone(edge.vj);
     releaseIfDone(apex);

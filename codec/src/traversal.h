@@ -42,6 +42,12 @@ public:
     // fan). Before the first component.
     void keepVertex(uint32_t v);
 
+    // Right edges to the front too, just behind the left edge: the walk
+    // then closes the region it is in before it turns back, as Edgebreaker
+    // does, and the front stays one loop far more often (the topological
+    // coder's order; the distance ranks keep the paper's). Before the first
+    // component.
+    void setDepthFirst() { depthFirst_ = true; }
     // Pops edges from the front of the deque until one is open (no triangle
     // and no boundary code on its other side yet). False when none is left.
     bool popOpenEdge(OpenEdge& edge);
@@ -104,6 +110,7 @@ private:
     std::vector<uint32_t> triangles_;
     size_t componentStart_ = 0;  // triangle count when the current component began
     SpatialIndex* candidates_;
+    bool depthFirst_ = false;
 };
 
 }  // namespace drm

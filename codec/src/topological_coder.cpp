@@ -1,0 +1,430 @@
+#include "topological_coder.h"
+
+#include <algorithm>
+#include <string>
+
+#include "admissibility.h"
+#include "bit_model.h"
+#include "common.h"
+#include "drm/drm.h"
+#include "gap_closing.h"
+#include "local_frame.h"
+#include "mesh_check.h"
+#include "range_coder.h"
+#include "rank_coder.h"
+#include "residual_model.h"
+#include "traversal.h"
+
+namespace drm {
+namespace {
+
+// What lies across an open edge.
+enum Symbol : uint32_t {
+    kBoundaryEdge = 0,
+    kNewVertex = 1,  // the next vertex: its position follows in the geometry stream
+    kEndAtI = 2,     // the far end of the fan around the edge's first vertex
+    kEndAtJ = 3,     // ... around its second vertex
+    kOtherVertex = 4,  // a vertex already met, by distance rank
+    kSymbolCount = 5,
+};
+
+// An edge's two sides each get a class from the fan end there: none, or the
+// angle the edge makes with it, under 60 degrees, under 90, wider; or both
+// ends are one vertex (a triangular hole). A narrow angle makes closing the
+// fan likely.
+constexpr int kSideClasses = 5;
+constexpr int kSameEnd = 4;
+constexpr int kFanClasses = 5;
+constexpr int kSymbolContexts = kSymbolCount * kSideClasses * kSideClasses * kFanClasses;
+// A young context starts from the proportions its previous-symbol parent
+// has seen, scaled to this mass (as the rank coder's tables do).
+constexpr uint32_t kSeedMass = 256;
+
+struct Models {
+    std::vector<AdaptiveFrequencies> parents, tables;
+    std::vector<uint8_t> seeded;
+    AxisModels newVertex[3], start[3], isolated[3];
+    AxisModels otherRank;
+    BitModel noSign;  // ranks are never negative: this model learns that at once
+    // Per triangle class, each predictor's recent errors (L1, decaying).
+    int64_t predictorScore[3][3] = {};
+
+    Models()
+        : parents(kSymbolCount, AdaptiveFrequencies(std::vector<uint16_t>(kSymbolCount, 16))),
+          tables(kSymbolContexts, AdaptiveFrequencies(std::vector<uint16_t>(kSymbolCount, 16))),
+          seeded(kSymbolContexts, 0) {}
+
+    AdaptiveFrequencies& table(uint32_t previous, int context) {
+        const size_t at = size_t(previous) * kSideClasses * kSideClasses * kFanClasses + size_t(context);
+        if (!seeded[at]) {
+            tables[at].seedFrom(parents[previous], kSeedMass);
+            seeded[at] = 1;
+        }
+        return tables[at];
+    }
+};
+
+int64_t component(const std::vector<int32_t>& grid, uint32_t v, int axis) { return grid[3 * size_t(v) + size_t(axis)]; }
+
+// How many rebuilt triangles lie around `center` from the triangle
+// (center, toward, o), walking away from the edge (center, toward).
+int fanSize(const Traversal& t, uint32_t center, uint32_t o, bool clockwise, int limit) {
+    int count = 1;
+    uint32_t far = o;
+    while (count < limit) {
+        const uint32_t next = clockwise ? t.thirdVertex(far, center) : t.thirdVertex(center, far);
+        if (next == Traversal::kNoTriangle || next == Traversal::kBoundary) break;
+        far = next;
+        ++count;
+    }
+    return count;
+}
+
+// The class of the side at `at` of edge (at, toward), whose fan ends at `end`.
+int sideClass(const std::vector<int32_t>& grid, uint32_t at, uint32_t toward, uint32_t end) {
+    if (end == kNoVertex) return 0;
+    int64_t u[3], w[3];
+    for (int k = 0; k < 3; ++k) {
+        u[k] = component(grid, toward, k) - component(grid, at, k);
+        w[k] = component(grid, end, k) - component(grid, at, k);
+    }
+    const int64_t d = u[0] * w[0] + u[1] * w[1] + u[2] * w[2];  // differences below 2^21: below 2^44
+    const int64_t uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2], ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+    if (d > 0 && 4 * __int128(d) * d > __int128(uu) * ww) return 1;  // cos > 1/2
+    return d > 0 ? 2 : 3;
+}
+
+// The decoder's side of what the walk shares: the positions met so far, the
+// traversal, the vertices of the front (met and not culled), the models.
+struct WalkState {
+    WalkState(size_t vertexCount, size_t faceCount, int bits)
+        : bits(bits), vertexCount(vertexCount), faceCount(faceCount), grid(3 * vertexCount, 0),
+          traversal(vertexCount, faceCount, nullptr), admissible(traversal, true), slotOf(vertexCount, kNoVertex) {
+        traversal.setDepthFirst();
+    }
+
+    int bits;
+    size_t vertexCount, faceCount;
+    std::vector<int32_t> grid;
+    Traversal traversal;
+    Admissibility admissible;
+    uint32_t met = 0;  // vertices met: ids 0 .. met - 1
+    std::vector<uint32_t> front, slotOf;
+    Models models;
+
+    void enter(uint32_t v) {
+        slotOf[v] = uint32_t(front.size());
+        front.push_back(v);
+    }
+    void leaveIfCulled(uint32_t v) {
+        if (slotOf[v] == kNoVertex || !traversal.isCulled(v)) return;
+        const uint32_t last = front.back();
+        front[slotOf[v]] = last;
+        slotOf[last] = slotOf[v];
+        front.pop_back();
+        slotOf[v] = kNoVertex;
+    }
+};
+
+// Codes position v (given by `actual` when encoding) as a residual from
+// `predicted`, one axis after the other; the first axis in `firstContext`,
+// the others in the bit length of the residuals before them.
+template <class Io>
+void codePosition(Io& io, AxisModels* models, int firstContext, const int64_t predicted[3], const int32_t* actual,
+                  WalkState& st, uint32_t v) {
+    int context = firstContext;
+    const int64_t top = (int64_t(1) << st.bits) - 1;
+    for (int k = 0; k < 3; ++k) {
+        const int64_t p = std::min(std::max<int64_t>(predicted[k], 0), top);
+        const int32_t r = codeResidual(io, models[k], context, [&](int) -> BitModel& { return models[k].sign[0]; },
+                                       Io::kEncoding ? int32_t(actual[k] - p) : 0);
+        const int64_t value = p + r;
+        if (!Io::kEncoding && (value < 0 || value > top))
+            throw Error(ErrorKind::Corrupt, "corrupt stream: a position lies outside the grid");
+        st.grid[3 * size_t(v) + size_t(k)] = int32_t(value);
+        context = std::min(std::max(context, lengthOf(r)), kMagnitudeContexts - 1);
+    }
+}
+
+// The same in a frame of the gate triangle (its normal the third axis, the
+// edge the first): the residual is turned into the frame, coded, and turned
+// back exactly (local_frame.h).
+template <class Io>
+void codePositionInFrame(Io& io, AxisModels* models, int firstContext, const int64_t predicted[3], const int32_t* actual,
+                         const LocalFrame& frame, WalkState& st, uint32_t v) {
+    const int64_t top = (int64_t(1) << st.bits) - 1;
+    int64_t p[3], r[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+        p[k] = std::min(std::max<int64_t>(predicted[k], 0), top);
+        if constexpr (Io::kEncoding) r[k] = actual[k] - p[k];
+    }
+    if constexpr (Io::kEncoding) frame.toFrame(r);
+    int context = firstContext;
+    for (int k = 0; k < 3; ++k) {
+        r[k] = codeResidual(io, models[k], context, [&](int) -> BitModel& { return models[k].sign[0]; }, int32_t(r[k]));
+        context = std::min(std::max(context, lengthOf(int32_t(r[k]))), kMagnitudeContexts - 1);
+    }
+    frame.fromFrame(r);
+    for (int k = 0; k < 3; ++k) {
+        const int64_t value = p[k] + r[k];
+        if (!Io::kEncoding && (value < 0 || value > top))
+            throw Error(ErrorKind::Corrupt, "corrupt stream: a position lies outside the grid");
+        st.grid[3 * size_t(v) + size_t(k)] = int32_t(value);
+    }
+}
+
+// A new vertex across `edge` (given by `actual` when encoding), as
+// vertex `v`. Three predictions: the parallelogram, and the rim of the fan
+// around either end carried on (around a sliver's hub the parallelogram
+// falls near the hub); the one of the smallest recent error in the gate
+// triangle's class (which of its angles is the narrowest) is used, and the
+// residual is coded in the gate triangle's frame, its first axis in a
+// context of the edge's extent (residuals grow with the triangles).
+template <class Io>
+void codeNewVertex(Io& geometry, WalkState& st, const OpenEdge& edge, const int64_t parallelogram[3], const int32_t* actual,
+                   uint32_t v) {
+    int64_t candidates[3][3], e[3], f[3];
+    int64_t edgeSpan = 0;
+    for (int k = 0; k < 3; ++k) {
+        const int64_t i = component(st.grid, edge.vi, k), j = component(st.grid, edge.vj, k), o = component(st.grid, edge.opposite, k);
+        candidates[0][k] = parallelogram[k];
+        candidates[1][k] = 2 * j - o;
+        candidates[2][k] = 2 * i - o;
+        e[k] = j - i;
+        f[k] = o - i;
+        edgeSpan = std::max(edgeSpan, std::abs(e[k]));
+    }
+    auto length2 = [&](uint32_t a, uint32_t b) {
+        int64_t sum = 0;
+        for (int k = 0; k < 3; ++k) {
+            const int64_t d = component(st.grid, a, k) - component(st.grid, b, k);
+            sum += d * d;
+        }
+        return sum;
+    };
+    const int64_t oppositeI = length2(edge.vj, edge.opposite), oppositeJ = length2(edge.vi, edge.opposite),
+                  oppositeO = length2(edge.vi, edge.vj);
+    const int triangleClass = oppositeI <= oppositeJ && oppositeI <= oppositeO ? 0 : oppositeJ <= oppositeO ? 1 : 2;
+    int64_t* score = st.models.predictorScore[triangleClass];
+    int chosen = 0;
+    for (int c = 1; c < 3; ++c)
+        if (score[c] < score[chosen]) chosen = c;
+    LocalFrame frame(e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]);
+    frame.alignFirstAxis(e[0], e[1], e[2]);
+    const int firstContext = std::min(bitLength(uint64_t(edgeSpan)) / 2, kMagnitudeContexts - 1);
+    codePositionInFrame(geometry, st.models.newVertex, firstContext, candidates[chosen], actual, frame, st, v);
+    for (int c = 0; c < 3; ++c) {
+        int64_t error = 0;
+        for (int k = 0; k < 3; ++k) error += std::abs(component(st.grid, v, k) - candidates[c][k]);
+        score[c] += error - (score[c] >> 4);
+    }
+}
+
+// The admissible front vertices other than the edge's fan ends, nearest the
+// prediction first (squared distance, then index).
+void rankedOthers(WalkState& st, const OpenEdge& edge, const FanEnds& ends, const int64_t predicted[3],
+                  std::vector<std::pair<int64_t, uint32_t>>& out) {
+    out.clear();
+    for (uint32_t v : st.front) {
+        if (v == ends.atI || v == ends.atJ || !st.admissible(v, edge)) continue;
+        int64_t d2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            const int64_t d = component(st.grid, v, k) - predicted[k];
+            d2 += d * d;
+        }
+        out.emplace_back(d2, v);
+    }
+}
+
+// The mesh being encoded: the true apex of each edge, and the input vertex
+// behind each id. The decoder passes none.
+struct Truth {
+    Truth(const std::vector<int32_t>& grid, const std::vector<uint32_t>& triangles, size_t vertexCount)
+        : grid(grid), triangles(triangles), idOf(vertexCount, kNoVertex), inputOf(vertexCount, kNoVertex) {}
+    const std::vector<int32_t>& grid;
+    const std::vector<uint32_t>& triangles;
+    std::vector<uint32_t> idOf, inputOf;
+    MeshTopology topology;
+};
+
+// Encoder and decoder in one: with a Writer the symbols come from `truth`,
+// with a Reader from the streams.
+template <class Io>
+void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, TopologicalStats* stats) {
+    // Encoding with stats: the bits coded since the last call, in bits.
+    double connectivityMark = 0, geometryMark = 0;
+    auto spent = [&](Io& io, double& mark) {
+        double now = 0;
+        if constexpr (Io::kEncoding) now = io.coder.bitsSoFar();
+        const double bits = now - mark;
+        mark = now;
+        return bits;
+    };
+    std::vector<std::pair<int64_t, uint32_t>> others;
+    uint32_t previous = kNewVertex;
+    size_t nextFace = 0;  // encoder: the first face that may start a component
+    int64_t lastStart[3];
+    for (int k = 0; k < 3; ++k) lastStart[k] = int64_t(1) << (st.bits - 1);
+    auto meet = [&](uint32_t input, uint32_t id) {  // encoder: input vertex `input` gets `id`
+        truth->idOf[input] = id;
+        truth->inputOf[id] = input;
+    };
+    uint32_t nextInput = 0;  // encoder: no input vertex below it is left unmet
+    const int32_t* none = nullptr;
+    while (st.traversal.triangleCount() < st.faceCount) {
+        // A new component: its first face's three vertices are the next
+        // three ids (the manifold cut leaves no vertex in two components).
+        if (st.met + 3 > st.vertexCount) throw Error(ErrorKind::Corrupt, "corrupt stream: more faces than vertices allow");
+        const int32_t* at[3] = {none, none, none};
+        if constexpr (Io::kEncoding) {
+            while (nextFace < st.faceCount && truth->idOf[truth->triangles[3 * nextFace]] != kNoVertex) ++nextFace;
+            if (nextFace == st.faceCount) throw Error(ErrorKind::Internal, "internal error: the topological walk missed faces");
+            for (int c = 0; c < 3; ++c) {
+                const uint32_t input = truth->triangles[3 * nextFace + size_t(c)];
+                if (truth->idOf[input] != kNoVertex)
+                    throw Error(ErrorKind::Internal, "internal error: a component shares a vertex with another");
+                meet(input, st.met + uint32_t(c));
+                at[c] = truth->grid.data() + 3 * size_t(input);
+            }
+        }
+        const uint32_t a = st.met, b = a + 1, c = a + 2;
+        codePosition(geometry, st.models.start, 0, lastStart, at[0], st, a);
+        for (int k = 0; k < 3; ++k) lastStart[k] = component(st.grid, a, k);
+        codePosition(geometry, st.models.start, 1, lastStart, at[1], st, b);
+        const int64_t fromB[3] = {component(st.grid, b, 0), component(st.grid, b, 1), component(st.grid, b, 2)};
+        codePosition(geometry, st.models.start, 1, fromB, at[2], st, c);
+        if (stats) stats->otherPositionBits += spent(geometry, geometryMark);
+        st.met += 3;
+        st.traversal.startComponent(a, b, c);
+        st.enter(a);
+        st.enter(b);
+        st.enter(c);
+
+        OpenEdge edge;
+        while (st.traversal.popOpenEdge(edge)) {
+            const FanEnds ends = fanEnds(edge, st.traversal);
+            int classI = sideClass(st.grid, edge.vi, edge.vj, ends.atI);
+            int classJ = sideClass(st.grid, edge.vj, edge.vi, ends.atJ);
+            if (ends.atI != kNoVertex && ends.atI == ends.atJ) classI = classJ = kSameEnd;
+            int64_t predicted[3];
+            for (int k = 0; k < 3; ++k)
+                predicted[k] = component(st.grid, edge.vi, k) + component(st.grid, edge.vj, k) - component(st.grid, edge.opposite, k);
+
+            uint32_t symbol = 0, apex = kNoVertex, input = kNoVertex;
+            if constexpr (Io::kEncoding) {
+                input = truth->topology.apexAcross(truth->inputOf[edge.vi], truth->inputOf[edge.vj], nullptr);
+                if (input == kNoVertex) symbol = kBoundaryEdge;
+                else if (truth->idOf[input] == kNoVertex) symbol = kNewVertex;
+                else {
+                    apex = truth->idOf[input];
+                    symbol = apex == ends.atI ? kEndAtI : apex == ends.atJ ? kEndAtJ : kOtherVertex;
+                }
+            }
+            // The fuller of the two fans (triangles rebuilt around the end,
+            // 2 or fewer .. 6 or more): the fuller, the likelier it closes.
+            const int fan = std::max(fanSize(st.traversal, edge.vi, edge.opposite, false, kFanClasses + 1),
+                                     fanSize(st.traversal, edge.vj, edge.opposite, true, kFanClasses + 1));
+            const int fanClass = std::max(fan, 2) - 2;
+            symbol = connectivity.symbol(st.models.table(previous, (classI * kSideClasses + classJ) * kFanClasses + fanClass), symbol);
+            st.models.parents[previous].observe(symbol);
+            previous = symbol;
+            if (stats) {
+                ++stats->symbols[symbol];
+                stats->symbolBits += spent(connectivity, connectivityMark);
+            }
+            if (symbol == kBoundaryEdge) {
+                st.traversal.closeAsBoundary(edge);
+            } else {
+                if (symbol == kNewVertex) {
+                    if (st.met >= st.vertexCount) throw Error(ErrorKind::Corrupt, "corrupt stream: more vertices than the mesh has");
+                    const int32_t* actual = none;
+                    if constexpr (Io::kEncoding) {
+                        meet(input, st.met);
+                        actual = truth->grid.data() + 3 * size_t(input);
+                    }
+                    apex = st.met++;
+                    codeNewVertex(geometry, st, edge, predicted, actual, apex);
+                    if (stats) stats->newVertexBits += spent(geometry, geometryMark);
+                    st.enter(apex);
+                } else if (symbol == kEndAtI || symbol == kEndAtJ) {
+                    apex = symbol == kEndAtI ? ends.atI : ends.atJ;
+                    if (apex == kNoVertex) throw Error(ErrorKind::Corrupt, "corrupt stream: a fan end named where there is none");
+                } else {
+                    rankedOthers(st, edge, ends, predicted, others);
+                    uint32_t rank = 0;
+                    if constexpr (Io::kEncoding) {
+                        int64_t d2 = 0;
+                        for (int k = 0; k < 3; ++k) {
+                            const int64_t d = component(st.grid, apex, k) - predicted[k];
+                            d2 += d * d;
+                        }
+                        for (const auto& o : others) rank += o < std::make_pair(d2, apex);
+                    }
+                    rank = uint32_t(codeResidual(connectivity, st.models.otherRank, 0,
+                                                 [&](int) -> BitModel& { return st.models.noSign; }, int32_t(rank)));
+                    if (stats) stats->rankBits += spent(connectivity, connectivityMark);
+                    if (rank >= others.size()) throw Error(ErrorKind::Corrupt, "corrupt stream: a vertex rank past the front");
+                    std::nth_element(others.begin(), others.begin() + rank, others.end());
+                    apex = others[rank].second;
+                }
+                if (!st.admissible(apex, edge))
+                    throw Error(Io::kEncoding ? ErrorKind::Internal : ErrorKind::Corrupt,
+                                Io::kEncoding ? "internal error: an apex the walk cannot take" : "corrupt stream: an impossible triangle");
+                st.traversal.attachApex(edge, apex);
+            }
+            st.leaveIfCulled(edge.vi);
+            st.leaveIfCulled(edge.vj);
+            if (apex != kNoVertex) st.leaveIfCulled(apex);
+            if (st.traversal.triangleCount() > st.faceCount)
+                throw Error(ErrorKind::Corrupt, "corrupt stream: more faces than the mesh has");
+        }
+    }
+    // Vertices in no face, each from the one before.
+    for (uint32_t v = st.met; v < st.vertexCount; ++v) {
+        const int32_t* actual = none;
+        if constexpr (Io::kEncoding) {
+            while (truth->idOf[nextInput] != kNoVertex) ++nextInput;
+            meet(nextInput, v);
+            actual = truth->grid.data() + 3 * size_t(nextInput);
+        }
+        int64_t from[3];
+        for (int k = 0; k < 3; ++k) from[k] = v > 0 ? component(st.grid, v - 1, k) : lastStart[k];
+        codePosition(geometry, st.models.isolated, 0, from, actual, st, v);
+        if (stats) stats->otherPositionBits += spent(geometry, geometryMark);
+        st.met = v + 1;
+    }
+}
+
+}  // namespace
+
+TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits, const std::vector<uint32_t>& triangles,
+                                     std::vector<uint32_t>* order, TopologicalStats* stats) {
+    const size_t vertexCount = grid.size() / 3, faceCount = triangles.size() / 3;
+    if (bits < 1 || bits > 21) throw Error("topological coder: bits must be 1 to 21");
+    Truth truth(grid, triangles, vertexCount);
+    const std::string problem = topologyProblem(triangles, vertexCount, &truth.topology);
+    if (!problem.empty()) throw Error("topological coder: " + problem);
+    WalkState st(vertexCount, faceCount, bits);
+    RangeEncoder connectivityCoder, geometryCoder;
+    Writer connectivity{connectivityCoder}, geometry{geometryCoder};
+    if (stats) *stats = TopologicalStats();
+    walk(connectivity, geometry, st, &truth, stats);
+    if (st.traversal.triangleCount() != faceCount)
+        throw Error(ErrorKind::Internal, "internal error: the topological walk rebuilt another face count");
+    if (order) *order = truth.inputOf;
+    return {connectivityCoder.finish(), geometryCoder.finish()};
+}
+
+TopologicalMesh decodeTopological(const TopologicalStreams& streams, size_t vertexCount, size_t faceCount, int bits) {
+    if (bits < 1 || bits > 21) throw Error(ErrorKind::Corrupt, "corrupt stream: bits must be 1 to 21");
+    WalkState st(vertexCount, faceCount, bits);
+    RangeDecoder connectivityCoder(streams.connectivity.data(), streams.connectivity.size());
+    RangeDecoder geometryCoder(streams.geometry.data(), streams.geometry.size());
+    Reader connectivity{connectivityCoder}, geometry{geometryCoder};
+    walk(connectivity, geometry, st, nullptr, nullptr);
+    if (connectivityCoder.bytesPastEnd() > 0 || geometryCoder.bytesPastEnd() > 0)
+        throw Error(ErrorKind::Corrupt, "corrupt stream: it ends before its last symbol");
+    return {std::move(st.grid), st.traversal.takeTriangles()};
+}
+
+}  // namespace drm

@@ -1,0 +1,77 @@
+// A topological connectivity coder with positions in the order it meets
+// them: the first stage of issue 15's per-file alternative for meshes the
+// distance ranks code poorly (sliver-rich CAD and STL meshes). Not yet a
+// part of the file format: tests round-trip it, and `drm-topology-study`
+// prices it against the distance-ranked file on the corpus.
+//
+// Why a second coder: a distance rank must name the apex of each triangle
+// among all the vertices still admissible, and on CAD meshes the apex of a
+// long thin triangle is mostly a vertex not yet in the mesh, far down the
+// distance order (method notes, "Connectivity on sliver-rich CAD meshes").
+// Here a vertex not yet in the mesh is simply the next one: positions are
+// coded as the walk meets vertices (parallelogram prediction across the open
+// edge), as Edgebreaker-style coders do, so naming it costs a symbol.
+//
+// The walk is drm's own (Traversal), depth first: both new edges of a
+// triangle go to the front of the deque, the left one first, so the walk
+// closes the region it is in before it turns back and the front stays about
+// one loop, as in Edgebreaker (with the paper's order, right edges to the
+// back, a sixth of tray-bottom's edges found their apex elsewhere on the
+// front). Each open edge codes one symbol: boundary, new vertex, the far end
+// of the fan at its first or at its second end, or another vertex already
+// met, then named by its distance rank from the parallelogram prediction
+// among the admissible vertices of the front. A symbol's context: the
+// symbol before, the angle the edge makes with each fan end, and how many
+// triangles the fuller of its two fans already has (the valence coders'
+// lesson: a full fan is about to close).
+//
+// A new vertex is predicted three ways, the parallelogram across the edge
+// and the rim of the fan around either end carried on (around a sliver's
+// hub the parallelogram falls near the hub); per class of gate triangle
+// (which of its angles is the narrowest) the one of the smallest recent
+// error is used. The residual is coded in the frame of the gate triangle
+// (normal third, edge first: local_frame.h), where a planar CAD face leaves
+// the third component near zero.
+#ifndef DRM_TOPOLOGICAL_CODER_H
+#define DRM_TOPOLOGICAL_CODER_H
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace drm {
+
+struct TopologicalStreams {
+    std::vector<uint8_t> connectivity;  // symbols and the ranks of other vertices
+    std::vector<uint8_t> geometry;      // positions, in the order the walk meets them
+};
+
+struct TopologicalMesh {
+    std::vector<int32_t> grid;        // x, y, z per vertex, in the order met
+    std::vector<uint32_t> triangles;  // as the walk rebuilt them
+};
+
+// Where an encoding's bits went (for studies; not stored anywhere).
+struct TopologicalStats {
+    // Edges by symbol: boundary, new vertex, fan end at the first end, at
+    // the second end, another vertex met before.
+    uint64_t symbols[5] = {};
+    double symbolBits = 0, rankBits = 0;             // connectivity
+    double newVertexBits = 0, otherPositionBits = 0;  // geometry: walk's new vertices, starts and isolated ones
+};
+
+// grid: x, y, z per vertex, each in [0, 2^bits), bits in 1..21. triangles:
+// a mesh the traversal can take (as cutIntoManifold gives it: each edge in
+// at most two faces, of opposite orientations; each vertex the centre of
+// one fan; no face repeating a vertex). Vertices in no face are coded after
+// the others. order, if given, receives for each decoded vertex the input
+// vertex it is. Throws Error on a mesh the walk cannot take.
+TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits, const std::vector<uint32_t>& triangles,
+                                     std::vector<uint32_t>* order = nullptr, TopologicalStats* stats = nullptr);
+
+// Throws Error on a stream that names an impossible triangle or runs out.
+TopologicalMesh decodeTopological(const TopologicalStreams& streams, size_t vertexCount, size_t faceCount, int bits);
+
+}  // namespace drm
+
+#endif  // DRM_TOPOLOGICAL_CODER_H
