@@ -52,6 +52,7 @@ py::dict statsDict(const drm::Stats& s, bool decoded) {
     d["bits"] = s.bits;
     d["predictor"] = drm::predictorName(s.predictor);
     d["curvature"] = s.curvature;
+    d["connectivity"] = drm::connectivityCoderName(s.connectivity);
     d["geometry"] = drm::geometryCoderName(s.geometry);
     d["refine_bits"] = s.refineBits;
     d["vertex_numbering"] = s.mortonNumbering ? "morton" : "geometry";
@@ -163,6 +164,7 @@ drm::Encoded encodeArrays(const FloatArray& vertices, const UIntArray& faces, in
         const py::handle v = item.second;
         if (key == "predictor") o.predictor = drm::parsePredictor(v.cast<std::string>());
         else if (key == "geometry") o.geometry = drm::parseGeometryCoder(v.cast<std::string>());
+        else if (key == "connectivity") o.connectivity = drm::parseConnectivityCoder(v.cast<std::string>());
         else if (key == "levers") o.levers = drm::parseLevers(v.cast<std::string>()), o.tryWithoutLevers = false;
         else if (key == "curvature") o.curvature = v.cast<bool>();
         else if (key == "refine_bits") o.refineBits = v.cast<int>();
@@ -237,7 +239,8 @@ PYBIND11_MODULE(drm, m) {
         },
         py::arg("vertices"), py::arg("faces"), py::arg("bits") = drm::kDefaultQuantizationBits,
         "encode(vertices (n, 3) float, faces (m, 3) uint32, bits=12, **options) -> bytes\n"
-        "options: predictor, geometry, levers, curvature, refine_bits, keep_vertex_order, verify,\n"
+        "options: predictor, geometry, connectivity ('auto', 'ranks', 'topological'), levers, curvature,\n"
+        "refine_bits, keep_vertex_order, verify,\n"
         "normal_bits, uv_bits, weld ('auto', 'on', 'off'), search_starts, threads (0, the default: a second\n"
         "thread where the machine has several cores; 1: one; never changes the bytes), keep (attribute list),\n"
         "attributes (dict of arrays).");

@@ -68,7 +68,8 @@ Arguments parseArguments(const std::string& command, const std::vector<std::stri
 const std::vector<std::string>& encodeOptionNames() {
     static const std::vector<std::string> names = {"--bits", "--predictor", "--curvature", "--geometry", "--levers",
                                                    "--refine-bits", "--attributes", "--normal-bits", "--uv-bits",
-                                                   "--weld", "--index", "--start", "--threads", "--parts"};
+                                                   "--weld", "--index", "--start", "--threads", "--parts",
+                                                   "--connectivity"};
     return names;
 }
 
@@ -116,6 +117,7 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
         if (args.has("--predictor")) options.predictor = drm::parsePredictor(args.value("--predictor"));
         if (args.has("--attributes")) options.attributes = drm::parseAttributes(args.value("--attributes"));
         if (args.has("--geometry")) options.geometry = drm::parseGeometryCoder(args.value("--geometry"));
+        if (args.has("--connectivity")) options.connectivity = drm::parseConnectivityCoder(args.value("--connectivity"));
         if (args.has("--levers")) {
             // Named levers are used as given: no automatic fallback to none.
             options.levers = drm::parseLevers(args.value("--levers"));

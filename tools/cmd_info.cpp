@@ -23,7 +23,7 @@ const char* const kInfoHelp =
     "           vertices and the histogram of rank codes (rank 0 = boundary\n"
     "           edge); without it those JSON values are null\n"
     "  --json   one JSON object with the keys vertices, faces, components,\n"
-    "           boundary_edges, bits, predictor, curvature, geometry,\n"
+    "           boundary_edges, bits, predictor, curvature, connectivity, geometry,\n"
     "           refine_bits (low bits of the refine coder, 0 otherwise), levers,\n"
     "           header_bytes, connectivity_bytes, geometry_bytes,\n"
     "           vertex_order_bytes, attribute_bytes, welded_vertices,\n"
@@ -90,6 +90,7 @@ void printJson(const std::string& path, const drm::Stats& s, bool ranks) {
     field("bits", std::to_string(s.bits));
     field("predictor", jsonString(drm::predictorName(s.predictor)));
     field("curvature", boolean(s.curvature));
+    field("connectivity", jsonString(drm::connectivityCoderName(s.connectivity)));
     field("geometry", jsonString(drm::geometryCoderName(s.geometry)));
     field("vertex_numbering", jsonString(s.mortonNumbering ? "morton" : "geometry"));
     field("connectivity_parts", std::to_string(s.connectivityParts));
@@ -141,6 +142,9 @@ void printText(const std::string& path, const drm::Stats& s, bool ranks) {
     row("bits per axis", std::to_string(s.bits));
     row("predictor", drm::predictorName(s.predictor));
     row("curvature", s.curvature ? "on" : "off");
+    row("connectivity coder", s.connectivity == drm::ConnectivityCoder::Topological
+                                  ? "topological (positions in the order met; no distance ranks)"
+                                  : "distance ranks");
     row("geometry coder", s.refineBits > 0 ? std::string(drm::geometryCoderName(s.geometry)) + " (" +
                                                   std::to_string(s.refineBits) + " low bits)"
                                             : std::string(drm::geometryCoderName(s.geometry)));

@@ -16,6 +16,9 @@ RankedMesh decodeRankedMesh(const std::string& input, ProgressBar& bar) {
     } catch (const drm::Error& e) {
         throw drm::Error(e.kind(), "cannot decode " + input + ": " + e.what());
     }
+    if (decoded.stats.connectivity == drm::ConnectivityCoder::Topological)
+        throw drm::Error(drm::ErrorKind::InvalidInput, input + " codes its connectivity topologically and has no distance ranks; "
+                         "give the mesh itself, or a file written with --connectivity ranks");
     RankedMesh ranked;
     ranked.mesh = std::move(decoded.mesh);
     ranked.faceRank = std::move(decoded.faceRank);  // the decoder reports the code of every face
@@ -33,6 +36,10 @@ RankedMesh loadRankedMesh(const std::string& input, const Arguments& parsed, Pro
         return decodeRankedMesh(input, bar);
     }
     drm::EncodeOptions options = encodeOptionsFrom(parsed);
+    // Ranks are what is shown: the distance-rank coder, whichever file is smaller.
+    if (options.connectivity == drm::ConnectivityCoder::Topological)
+        throw UsageError("--connectivity topological codes no distance ranks to show");
+    options.connectivity = drm::ConnectivityCoder::Ranks;
     drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
     RankedMesh ranked;
     ranked.mesh = std::move(loaded.mesh);

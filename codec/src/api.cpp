@@ -52,6 +52,21 @@ Predictor parsePredictor(const std::string& name) {
     throw Error(ErrorKind::InvalidInput, "unknown predictor '" + name + "' (use auto, parallelogram or midpoint)");
 }
 
+const char* connectivityCoderName(ConnectivityCoder c) {
+    switch (c) {
+    case ConnectivityCoder::Auto: return "auto";
+    case ConnectivityCoder::Ranks: return "ranks";
+    case ConnectivityCoder::Topological: return "topological";
+    }
+    return "unknown";
+}
+
+ConnectivityCoder parseConnectivityCoder(const std::string& name) {
+    for (ConnectivityCoder c : {ConnectivityCoder::Auto, ConnectivityCoder::Ranks, ConnectivityCoder::Topological})
+        if (name == connectivityCoderName(c)) return c;
+    throw Error(ErrorKind::InvalidInput, "unknown connectivity coder '" + name + "' (use auto, ranks or topological)");
+}
+
 // Auto is an option, not a coder: the table holds what a file can store.
 const char* geometryCoderName(GeometryCoder g) {
     if (g == GeometryCoder::Auto) return "auto";

@@ -5,6 +5,8 @@
 // ones left in a Decoding and adds its part:
 //   readFile (file_format.h)     header and section table, checked
 //   decodeVertices               the geometry section's first pass
+//   (format 13's topological coder: decodeTopologically instead of the
+//   three stages from here, both sections at once)
 //   readRepairsBeforeTraversal   the vertex copies of a manifold cut
 //   decodeConnectivity           the ranks, replayed into triangles
 //   refineVertices               the geometry's second pass (Refine)
@@ -34,6 +36,7 @@
 #include "spatial_index.h"
 #include "start_triangle.h"
 #include "stats.h"
+#include "topological_coder.h"
 #include "traversal.h"
 #include "vertex_order.h"
 
@@ -56,6 +59,7 @@ struct Decoding {
     std::unique_ptr<RepairReader> repairs;
     size_t looseCount = 0, duplicateCount = 0;
     size_t traversalFaces = 0, traversalVertices = 0;
+    uint64_t boundaryEdges = 0;  // format 13's topological coder: the boundary symbols
 
     const std::vector<uint32_t>& copyOf() const {
         static const std::vector<uint32_t> none;
@@ -95,6 +99,32 @@ void readRepairsBeforeTraversal(Decoding& d) {
     }
     d.traversalFaces = size_t(header.faceCount) - d.looseCount - d.duplicateCount;
     d.traversalVertices = d.vertexCount + d.copyOf().size();
+}
+
+// Format 13: the topological coder's two sections decode into the vertices
+// (copies included, each where its original is) and the traversal's faces,
+// in the numbering the ranks' decoder gives (topological_coder.h).
+void decodeTopologically(Decoding& d) {
+    const FileHeader& header = d.header;
+    d.vertexCount = size_t(header.vertexCount);
+    if (header.hasRepairs) {
+        d.repairs.reset(new RepairReader(d.parts.repairs, d.parts.repairsSize, header.vertexCount, header.copyCount,
+                                         header.faceCount));
+        d.looseCount = d.repairs->repairs().looseCount();
+        d.duplicateCount = d.repairs->duplicateCount();
+    }
+    d.traversalFaces = size_t(header.faceCount) - d.looseCount - d.duplicateCount;
+    d.traversalVertices = d.vertexCount + d.copyOf().size();
+    TopologicalMesh decoded = decodeTopological(d.parts.connectivity, d.parts.connectivitySize, d.parts.geometry,
+                                                d.parts.geometrySize, d.vertexCount, d.copyOf().size(), d.traversalFaces,
+                                                header.grid.bits);
+    if (decoded.components != header.componentCount)
+        throw Error(ErrorKind::Corrupt, "corrupt file: the header counts " + std::to_string(header.componentCount) +
+                    " components, the connectivity section " + std::to_string(decoded.components));
+    d.result.quantized = std::move(decoded.grid);
+    d.result.mesh.triangles = std::move(decoded.triangles);
+    d.result.faceRank.assign(d.traversalFaces, 0);  // no ranks
+    d.boundaryEdges = decoded.boundaryEdges;
 }
 
 // One rank stream replayed into faces: a whole mesh's, or one of the two
@@ -337,6 +367,7 @@ void fillStats(Decoding& d, size_t fileSize) {
     static const Repairs noRepairs;
     fillStatsFromHeader(stats, d.parts, fileSize);  // leaves the decoded figures (ranks, repairs, attributes) alone
     fillStatsFromTraversal(stats, d.vertices.lowBits, d.repairs ? d.repairs->repairs() : noRepairs);
+    if (d.header.connectivityCoder == ConnectivityCoder::Topological) stats.boundaryEdges = d.boundaryEdges;
     stats.vertices = d.result.mesh.vertexCount();  // the file's vertices, or the split ones of a welded mesh
 }
 
@@ -350,14 +381,19 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
     Decoding d(parts, *geometryCoderOf(parts.header.geometryCoder));  // readFile refuses ids the table lacks
     d.result.grid = parts.header.grid;
 
-    progress.stage("decoding vertices", 0.01);
-    decodeVertices(d);
-    readRepairsBeforeTraversal(d);
-    progress.stage("decoding connectivity", 0.05);
-    decodeConnectivity(d, options, progress);
-    if (d.geometryCoder.decodeAfterConnectivity) {
-        progress.stage("refining vertices", 0.95);
-        refineVertices(d);
+    if (parts.header.connectivityCoder == ConnectivityCoder::Topological) {
+        progress.stage("decoding vertices and connectivity", 0.01);
+        decodeTopologically(d);
+    } else {
+        progress.stage("decoding vertices", 0.01);
+        decodeVertices(d);
+        readRepairsBeforeTraversal(d);
+        progress.stage("decoding connectivity", 0.05);
+        decodeConnectivity(d, options, progress);
+        if (d.geometryCoder.decodeAfterConnectivity) {
+            progress.stage("refining vertices", 0.95);
+            refineVertices(d);
+        }
     }
     if (d.repairs) undoRepairs(d);
     if (parts.header.keepsVertexOrder) restoreVertexOrder(d);

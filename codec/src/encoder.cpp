@@ -29,6 +29,7 @@
 #include "rank_coder.h"
 #include "repair_section.h"
 #include "spanning_tree.h"
+#include "topological_coder.h"
 #include "traversal.h"
 #include "vertex_order.h"
 #include "spatial_index.h"
@@ -1172,6 +1173,72 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
     return best;
 }
 
+// Format 13: the mesh by the topological coder (topological_coder.h): the
+// connectivity named by topology, the positions in the order the walk
+// meets them. The repairs and vertex order sections are as for ranks.
+Attempt encodeTopologically(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
+                            const EncodeOptions& options, ProgressReporter& progress) {
+    progress.stage("coding topologically", 0.9);
+    const size_t originals = mesh.vertexCount(), copies = cut.copyOf.size();
+    std::vector<int32_t> grid(prepared.quantized);  // copies at their originals' grid points
+    grid.reserve(3 * (originals + copies));
+    for (uint32_t original : cut.copyOf)
+        for (int k = 0; k < 3; ++k) grid.push_back(prepared.quantized[3 * size_t(original) + size_t(k)]);
+    TopologicalLayout layout;
+    TopologicalStreams streams = encodeTopological(grid, prepared.grid.bits, *prepared.triangles, cut.copyOf, &layout);
+    std::vector<uint32_t> decodedIndex(originals + copies);
+    for (size_t d = 0; d < layout.vertexOf.size(); ++d) decodedIndex[layout.vertexOf[d]] = uint32_t(d);
+
+    Attempt attempt;
+    Encoded& result = attempt.encoded;
+    result.grid = prepared.grid;
+    const size_t faceCount = layout.faceOf.size();
+    FileHeader header;
+    header.vertexCount = originals;
+    header.faceCount = faceCount + cut.looseTriangles.size() / 3 + prepared.repairs.duplicateOf.size();
+    header.hasRepairs = prepared.repaired;
+    header.copyCount = copies;
+    header.grid = result.grid;
+    header.connectivityCoder = ConnectivityCoder::Topological;
+    // The fields the ranks would read: fixed, and meaningless here.
+    header.predictor = Predictor::Parallelogram;
+    header.levers = Levers::none();
+    header.keepsVertexOrder = options.keepVertexOrder;
+    header.componentCount = layout.components;
+
+    Repairs inDecodedOrder;
+    if (prepared.repaired) {
+        inDecodedOrder = prepared.repairs;
+        inDecodedOrder.copyOf.resize(copies);
+        for (size_t r = 0; r < copies; ++r) inDecodedOrder.copyOf[r] = decodedIndex[cut.copyOf[layout.vertexOf[originals + r] - originals]];
+        inDecodedOrder.looseTriangles.resize(cut.looseTriangles.size());
+        for (size_t c = 0; c < cut.looseTriangles.size(); ++c) inDecodedOrder.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
+        std::vector<uint32_t> positionOf(faceCount);
+        for (size_t i = 0; i < faceCount; ++i) {
+            inDecodedOrder.flipped[i] = prepared.repairs.flipped[layout.faceOf[i]];
+            positionOf[layout.faceOf[i]] = uint32_t(i);
+        }
+        for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
+        attempt.repairs = encodeRepairs(inDecodedOrder, originals);
+    }
+    std::vector<uint32_t> order(layout.vertexOf.begin(), layout.vertexOf.begin() + originals);  // decoded -> input
+    if (options.keepVertexOrder) attempt.vertexOrder = encodeVertexOrder(order);
+    attempt.decodedTriangles = std::move(layout.triangles);
+    if (prepared.repaired) undoCut(attempt.decodedTriangles, inDecodedOrder, originals);
+    if (options.keepVertexOrder) {
+        for (uint32_t& v : attempt.decodedTriangles) v = order[v];
+        for (size_t v = 0; v < order.size(); ++v) order[v] = uint32_t(v);
+    }
+    result.vertexOrder = std::move(order);
+    result.faceRank.assign(prepared.inputFaces, 0);  // no ranks
+    attempt.header = header;
+    attempt.connectivity = std::move(streams.connectivity);
+    fillStatsFromTraversal(result.stats, 0, inDecodedOrder);
+    result.stats.boundaryEdges = layout.boundaryEdges;
+    writeAttempt(attempt, GeometryCoder::SpanningTree, std::move(streams.geometry));
+    return attempt;
+}
+
 }  // namespace
 
 Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, ProgressReporter& progress,
@@ -1203,6 +1270,16 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
                     std::to_string(options.bits) + " bits");
     if (options.threads < 0)
         throw Error(ErrorKind::InvalidInput, "threads " + std::to_string(options.threads) + " is negative (0: as the machine allows)");
+    if (options.connectivity != ConnectivityCoder::Auto && options.connectivity != ConnectivityCoder::Ranks &&
+        options.connectivity != ConnectivityCoder::Topological)
+        throw Error(ErrorKind::InvalidInput, "unknown connectivity coder " + std::to_string(int(options.connectivity)));
+    // The topological coder codes the positions itself: a vertex coder
+    // asked for (raw keeps the input order) is the ranks' alone.
+    if (options.connectivity == ConnectivityCoder::Topological && options.geometry != GeometryCoder::Auto)
+        throw Error(ErrorKind::InvalidInput, std::string("the topological connectivity coder codes the positions itself; geometry coder ") +
+                    geometryCoderName(options.geometry) + " goes with the distance ranks");
+    // The topological coder alone needs no vertex section of its own.
+    const bool ranks = options.connectivity != ConnectivityCoder::Topological;
     if (options.connectivityParts < 0 || options.connectivityParts > 2)
         throw Error(ErrorKind::InvalidInput, "connectivity parts " + std::to_string(options.connectivityParts) +
                     " is not 0 (as the mesh asks), 1 or 2");
@@ -1217,7 +1294,7 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // vertex section is coded, where the section's numbering can be known
     // before it: on the full grid, for a coder that does not keep the
     // input's order.
-    const bool earlyConnectivity = secondThreadAllowed(options) && firstLowBits == 0 &&
+    const bool earlyConnectivity = ranks && secondThreadAllowed(options) && firstLowBits == 0 &&
                                    !geometryCoderOf(firstCoder)->keepsInputOrder &&
                                    mesh.vertexCount() <= kEarlyConnectivityUpToVertices;
     EncodeOptions sectionOptions = options;
@@ -1226,7 +1303,7 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // on an exception the future is destroyed first, and waits for it.
     VertexSection firstSection;
     std::future<VertexSection> firstSectionCoding;
-    if (secondThreadAllowed(options))
+    if (ranks && secondThreadAllowed(options))
         // Its own second thread (the graph's halves, the forest) makes a
         // third while the topology check lasts (igea: 30 of 350 ms), unless
         // it keeps to one beside the early connectivity.
@@ -1258,6 +1335,11 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     prepared.repairs.flipped = std::move(cut.flipped);
     prepared.repairs.duplicateOf = std::move(cut.duplicateOf);
     prepared.repairs.duplicateReversed = std::move(cut.duplicateReversed);
+    if (!ranks) {
+        Attempt topological = encodeTopologically(mesh, prepared, cut, options, progress);
+        topological.encoded.quantized = std::move(prepared.quantized);
+        return topological;
+    }
 
     // While the vertex section is coded on the second thread, the first
     // attempt's connectivity is coded here, in the numbering the section
@@ -1289,6 +1371,12 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
             Attempt refined = encodeWithGeometry(mesh, prepared, cut, options, lowBits, progress);
             if (refined.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(refined);
         }
+    }
+    // Auto (with the vertex coder left to the encoder): the topological
+    // coder too, the smaller file kept.
+    if (options.connectivity == ConnectivityCoder::Auto && options.geometry == GeometryCoder::Auto) {
+        Attempt topological = encodeTopologically(mesh, prepared, cut, options, progress);
+        if (topological.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(topological);
     }
     // The attempts only read the quantized input; the one kept takes it.
     best.encoded.quantized = std::move(prepared.quantized);

@@ -88,8 +88,12 @@ FileHeader decodeHeader(ByteReader& in, int version) {
         throw Error(ErrorKind::Corrupt, "corrupt file: unknown predictor " + std::to_string(predictor));
     h.predictor = Predictor(predictor);
     const uint8_t connectivity = in.u8("connectivity coder");
-    if (connectivity != uint8_t(ConnectivityCoder::RankRangeCoder))
+    const bool topological = connectivity == uint8_t(ConnectivityCoder::Topological) && version >= kFirstFormatWithTopologicalCoder;
+    if (connectivity != uint8_t(ConnectivityCoder::Ranks) && !topological)
         throw Error(ErrorKind::Unsupported, "unsupported file: unknown connectivity coder " + std::to_string(connectivity));
+    h.connectivityCoder = ConnectivityCoder(connectivity);
+    if (topological && h.twoParts)
+        throw Error(ErrorKind::Corrupt, "corrupt file: a topological connectivity section in two parts");
     const uint8_t geometry = in.u8("geometry coder");
     if (!geometryCoderById(geometry))
         throw Error(ErrorKind::Unsupported, "unsupported file: unknown geometry coder " + std::to_string(geometry));
@@ -138,6 +142,9 @@ std::string headerProblem(const FileHeader& h) {
         return "unknown predictor " + std::to_string(int(h.predictor));
     if (!geometryCoderOf(h.geometryCoder))
         return "unknown geometry coder " + std::to_string(int(h.geometryCoder));
+    if (h.connectivityCoder != ConnectivityCoder::Ranks && h.connectivityCoder != ConnectivityCoder::Topological)
+        return "unknown connectivity coder " + std::to_string(int(h.connectivityCoder));
+    if (h.connectivityCoder == ConnectivityCoder::Topological && h.twoParts) return "a topological connectivity in two parts";
     if (h.vertexCount == 0 || h.vertexCount > kMaxVertexCount)
         return std::to_string(h.vertexCount) + " vertices (a file holds 1 to " + std::to_string(kMaxVertexCount) + ")";
     if (h.faceCount > kMaxFaceCount)

@@ -28,7 +28,10 @@ constexpr int kFirstFormatWithSeamFirstBall = 12;
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
 constexpr uint16_t kFormatVersion = kFileFormatVersion;  // written; read: drm.h's readable range
 
-enum class ConnectivityCoder : uint8_t { RankRangeCoder = 1 };
+// From 13 the connectivity coder may be ConnectivityCoder::Topological: the
+// connectivity and geometry sections then hold topological_coder.h's two
+// streams.
+constexpr int kFirstFormatWithTopologicalCoder = 13;
 
 constexpr uint16_t kFlagCurvature = 1;
 constexpr uint16_t kFlagTopologicalFilter = 2;
@@ -68,7 +71,7 @@ struct FileHeader {
     // (kFlagTwoParts, connectivity_parts.h).
     bool twoParts = false;
     Levers levers;
-    ConnectivityCoder connectivityCoder = ConnectivityCoder::RankRangeCoder;
+    ConnectivityCoder connectivityCoder = ConnectivityCoder::Ranks;
     GeometryCoder geometryCoder = GeometryCoder::SpanningTree;
     // With repairs: vertices vertexCount .. vertexCount + copyCount - 1 of
     // the traversal are copies (listed in the repairs section).

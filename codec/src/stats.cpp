@@ -14,6 +14,7 @@ void fillStatsFromHeader(Stats& stats, const FileParts& parts, size_t fileSize) 
     stats.curvature = header.curvature;
     stats.levers = header.levers;
     stats.geometry = header.geometryCoder;
+    stats.connectivity = header.connectivityCoder;
     stats.mortonNumbering = header.mortonNumbering;
     stats.connectivityParts = header.twoParts ? 2 : 1;
     stats.headerBytes = parts.headerBytes;

@@ -42,13 +42,8 @@
 namespace drm {
 
 struct TopologicalStreams {
-    std::vector<uint8_t> connectivity;  // symbols and the ranks of other vertices
+    std::vector<uint8_t> connectivity;  // symbols, the ranks of other vertices, the copies' places
     std::vector<uint8_t> geometry;      // positions, in the order the walk meets them
-};
-
-struct TopologicalMesh {
-    std::vector<int32_t> grid;        // x, y, z per vertex, in the order met
-    std::vector<uint32_t> triangles;  // as the walk rebuilt them
 };
 
 // Where an encoding's bits went (for studies; not stored anywhere).
@@ -60,17 +55,41 @@ struct TopologicalStats {
     double newVertexBits = 0, otherPositionBits = 0;  // geometry: walk's new vertices, starts and isolated ones
 };
 
-// grid: x, y, z per vertex, each in [0, 2^bits), bits in 1..21. triangles:
-// a mesh the traversal can take (as cutIntoManifold gives it: each edge in
-// at most two faces, of opposite orientations; each vertex the centre of
-// one fan; no face repeating a vertex). Vertices in no face are coded after
-// the others. order, if given, receives for each decoded vertex the input
-// vertex it is. Throws Error on a mesh the walk cannot take.
-TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits, const std::vector<uint32_t>& triangles,
-                                     std::vector<uint32_t>* order = nullptr, TopologicalStats* stats = nullptr);
+// The decoded numbering, as the encoder sees it. Decoded vertices are the
+// originals in the order the walk met them (vertices in no face last),
+// then the copies, in the order of the vertices they copy (so that a
+// repairs section lists their originals in non-decreasing order).
+struct TopologicalLayout {
+    std::vector<uint32_t> vertexOf;   // decoded vertex -> the caller's
+    std::vector<uint32_t> faceOf;     // decoded face -> the caller's
+    std::vector<uint32_t> triangles;  // as decoded, over decoded vertices
+    uint64_t components = 0;
+    uint64_t boundaryEdges = 0;
+};
 
-// Throws Error on a stream that names an impossible triangle or runs out.
-TopologicalMesh decodeTopological(const TopologicalStreams& streams, size_t vertexCount, size_t faceCount, int bits);
+// grid: x, y, z per vertex, each in [0, 2^bits), bits in 1..21; its last
+// copyOf.size() vertices are copies of others (a manifold cut's: vertex
+// n - copyOf.size() + k of n copies vertex copyOf[k], an original, at the
+// same grid point). triangles: a mesh the traversal can take (as
+// cutIntoManifold gives it: each edge in at most two faces, of opposite
+// orientations; each vertex the centre of one fan; no face repeating a
+// vertex). Throws Error on a mesh the walk cannot take.
+TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits, const std::vector<uint32_t>& triangles,
+                                     const std::vector<uint32_t>& copyOf, TopologicalLayout* layout = nullptr,
+                                     TopologicalStats* stats = nullptr);
+
+struct TopologicalMesh {
+    std::vector<int32_t> grid;        // x, y, z per decoded vertex, copies included
+    std::vector<uint32_t> triangles;  // over decoded vertices, as the walk rebuilt them
+    uint64_t components = 0;
+    uint64_t boundaryEdges = 0;
+};
+
+// vertexCount counts the originals, copyCount the copies after them.
+// Throws Error (Corrupt) on streams that name an impossible triangle, run
+// out, or claim more vertices than their bytes can hold.
+TopologicalMesh decodeTopological(const uint8_t* connectivity, size_t connectivitySize, const uint8_t* geometry,
+                                  size_t geometrySize, size_t vertexCount, size_t copyCount, size_t faceCount, int bits);
 
 }  // namespace drm
 

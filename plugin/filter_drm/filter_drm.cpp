@@ -80,6 +80,7 @@ bool DrmFilterPlugin::applyFilter(QAction* /*action*/, MeshDocument& md, const R
     } statusBarReset;
     try {
         drm::EncodeOptions options = drm_meshlab::encodeOptionsFrom(parameters);
+        options.connectivity = drm::ConnectivityCoder::Ranks;  // the ranks are what the colours show
         options.progress = drm_meshlab::progressTo(cb);
         const drm::Mesh mesh = drm::vcgio::fromVcg(m->cm);
         const drm::Encoded encoded = drm_meshlab::encodeMesh(mesh, options);

@@ -50,6 +50,13 @@ inline const std::vector<NamedOptions>& adversarialOptions() {
             o.geometry = drm::GeometryCoder::Refine;
             o.keepVertexOrder = true;
         });
+        add("topological", [](drm::EncodeOptions& o) { o.connectivity = drm::ConnectivityCoder::Topological; });
+        add("topological_bits1_keep_order", [](drm::EncodeOptions& o) {
+            o.connectivity = drm::ConnectivityCoder::Topological;
+            o.bits = 1;
+            o.keepVertexOrder = true;
+        });
+        add("ranks", [](drm::EncodeOptions& o) { o.connectivity = drm::ConnectivityCoder::Ranks; });
         add("paper_method", [](drm::EncodeOptions& o) {
             o.levers = drm::Levers::none();
             o.tryWithoutLevers = false;

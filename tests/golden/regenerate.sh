@@ -2,7 +2,7 @@
 # Rewrites the golden .drm files and the meshes they must decode to. Run this
 # only for an intended format change, and say so in the commit: the golden
 # test exists so that no change of the bitstream passes unnoticed.
-# The files of older format versions (v1/ to v11/) are frozen, never rewritten: the
+# The files of older format versions (v1/ to v12/) are frozen, never rewritten: the
 # golden test checks that the decoder still reads them.
 # Usage: tests/golden/regenerate.sh [path/to/drm]
 #        tests/golden/regenerate.sh --check path/to/drm
@@ -34,16 +34,20 @@ encode() {  # NAME SOURCE OPTIONS...
     "$drm" decode "$out/$name.drm" "$out/$name.decoded.ply" >/dev/null
   fi
 }
-encode torus torus.ply                                  # regular, closed: near-zero ranks
-encode nefertiti nefertiti.ply --levers none            # open, the paper's method
-encode blobby-3cc blobby-3cc.ply --keep-vertex-order    # 3 components with holes, all levers, vertex order kept
+# The ranks' files ask for the ranks (--connectivity ranks): left to the
+# encoder, several would come out topological (format 13).
+encode torus torus.ply --connectivity ranks              # regular, closed: near-zero ranks
+encode nefertiti nefertiti.ply --levers none --connectivity ranks  # open, the paper's method
+encode blobby-3cc blobby-3cc.ply --keep-vertex-order --connectivity ranks  # 3 components with holes, all levers, vertex order kept
 encode star-raw star-cgal.ply --geometry raw --bits 8 --predictor parallelogram
 encode nefertiti-refine nefertiti.ply --geometry refine  # refine's coarse tree and low bits
-encode tray-bottom tray-bottom.ply                       # CAD STL slivers: the front order (format 5) ranks many edges
-encode bunny-lres bunny-lres.ply                         # a scan: edges from the parent in the frame along the walk, their tangent signs (format 7)
+encode tray-bottom tray-bottom.ply --connectivity ranks  # CAD STL slivers: the front order (format 5) ranks many edges
+encode bunny-lres bunny-lres.ply --connectivity ranks    # a scan: edges from the parent in the frame along the walk, their tangent signs (format 7)
 encode shark-refine mech-holes-shark.ply --geometry refine --refine-bits 2  # refine's coarse tree with format 7's frame
-encode blobby-boundary blobby-3cc.ply --levers boundary  # holes, the boundary flags alone (format 10): the fans walked for them only
-encode bunny-lres-parts bunny-lres.ply --parts 2          # a scan in two connectivity parts (format 11): the seam, its classes, kept vertices
+encode blobby-boundary blobby-3cc.ply --levers boundary --connectivity ranks  # holes, the boundary flags alone (format 10): the fans walked for them only
+encode bunny-lres-parts bunny-lres.ply --parts 2 --connectivity ranks  # a scan in two connectivity parts (format 11): the seam, its classes, kept vertices
+encode tray-bottom-topological tray-bottom.ply           # CAD STL slivers, left to the encoder: the topological coder (format 13)
+encode blobby-3cc-topological blobby-3cc.ply --connectivity topological --keep-vertex-order  # 3 components with holes, topological, vertex order kept
 if [ $check = 1 ]; then
   if [ ${#differ[@]} -gt 0 ]; then
     printf 'the encoder now writes %s differently from tests/golden\n' "${differ[@]}" >&2

@@ -10,7 +10,8 @@
 // triangles in the connectivity section; v8/: before format 9's Morton
 // numbering; v9/: before format 10's boundary flags; v10/: before format
 // 11's connectivity in two parts; v11/: before format 12's first ball on
-// the seam's side), so the decoder keeps reading what users already have.
+// the seam's side; v12/: before format 13's topological coder), so the
+// decoder keeps reading what users already have.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -50,6 +51,23 @@ TEST(Golden, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine"); }
 TEST(Golden, BoundaryFlagsAloneOnBlobby) { expectDecodesToGolden("blobby-boundary"); }
 // The connectivity in two parts (format 11), forced on a small scan.
 TEST(Golden, TwoPartsOnBunnyLres) { expectDecodesToGolden("bunny-lres-parts"); }
+// Format 13's topological coder, which the encoder picks for CAD slivers.
+TEST(Golden, TopologicalOnTrayBottom) { expectDecodesToGolden("tray-bottom-topological"); }
+// The topological coder over three components with holes, vertex order kept.
+TEST(Golden, TopologicalOnBlobbyWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc-topological"); }
+
+// Format 12's files, as 19bca29 wrote them (format 12's last encoder,
+// 0b5407b, wrote them byte for byte the same): the distance ranks alone.
+TEST(GoldenFormat12, Torus) { expectDecodesToGolden("torus", "/v12", 12); }
+TEST(GoldenFormat12, NefertitiWithThePapersMethod) { expectDecodesToGolden("nefertiti", "/v12", 12); }
+TEST(GoldenFormat12, ThreeComponentsWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc", "/v12", 12); }
+TEST(GoldenFormat12, RawGeometryAtEightBits) { expectDecodesToGolden("star-raw", "/v12", 12); }
+TEST(GoldenFormat12, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine", "/v12", 12); }
+TEST(GoldenFormat12, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom", "/v12", 12); }
+TEST(GoldenFormat12, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres", "/v12", 12); }
+TEST(GoldenFormat12, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine", "/v12", 12); }
+TEST(GoldenFormat12, BoundaryFlagsAloneOnBlobby) { expectDecodesToGolden("blobby-boundary", "/v12", 12); }
+TEST(GoldenFormat12, TwoPartsOnBunnyLres) { expectDecodesToGolden("bunny-lres-parts", "/v12", 12); }
 
 // Format 11's files, as its last encoder (98ace33, byte for byte
 // a67fd9c's) wrote them: on the seam's side, the size step's wider balls

@@ -108,7 +108,7 @@ def mesh_files():
     return files
 
 
-INFO_KEYS = {"vertices", "faces", "components", "boundary_edges", "bits", "predictor", "curvature", "geometry",
+INFO_KEYS = {"vertices", "faces", "components", "boundary_edges", "bits", "predictor", "curvature", "connectivity", "geometry",
              "refine_bits", "vertex_numbering", "levers", "header_bytes", "connectivity_bytes", "geometry_bytes", "vertex_order_bytes",
              "attribute_bytes", "welded_vertices", "attributes", "total_bytes", "connectivity_bpv", "geometry_bpv",
              "attribute_bpv", "total_bpv", "rank_histogram"}
@@ -168,11 +168,26 @@ def test_keep_vertex_order_gives_input_indices():
     assert canonical(out_faces) == canonical(faces)
 
 
+def test_topological_connectivity_round_trips_and_is_reported():
+    # tray-bottom: CAD slivers, whose connectivity the topological coder
+    # codes in far fewer bits than the distance ranks.
+    vertices, faces = read_ply(os.path.join(DATA, "tray-bottom.ply"))
+    topological = drm.encode_full(vertices, faces, connectivity="topological")
+    ranks = drm.encode_full(vertices, faces, connectivity="ranks")
+    assert topological["stats"]["connectivity"] == "topological"
+    assert ranks["stats"]["connectivity"] == "ranks"
+    assert topological["stats"]["connectivity_bytes"] < ranks["stats"]["connectivity_bytes"]
+    out_vertices, out_faces = drm.decode(topological["data"])
+    assert len(out_faces) == len(faces) and len(out_vertices) == len(vertices)
+    with pytest.raises(Exception, match="connectivity coder"):
+        drm.encode(vertices, faces, connectivity="edgebreaker")
+
+
 def test_search_starts_never_gives_a_larger_file():
     # tray-bottom: CAD slivers, where the start search finds a smaller file.
     vertices, faces = read_ply(os.path.join(DATA, "tray-bottom.ply"))
-    searched = drm.encode(vertices, faces)
-    smallest = drm.encode(vertices, faces, search_starts=False)
+    searched = drm.encode(vertices, faces, connectivity="ranks")
+    smallest = drm.encode(vertices, faces, search_starts=False, connectivity="ranks")
     assert len(searched) < len(smallest)
     for data in (searched, smallest):
         out_vertices, out_faces = drm.decode(data)

@@ -331,7 +331,7 @@ TEST(ChecksummedCorruption, OutOfRangeHeaderFieldsAreRefused) {
         {"predictor 3", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.predictor = 3; }},
         {"predictor 255", drm::ErrorKind::Corrupt, [](HeaderFields& h) { h.predictor = 255; }},
         {"connectivity coder 0", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.connectivityCoder = 0; }},
-        {"connectivity coder 2", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.connectivityCoder = 2; }},
+        {"connectivity coder 3", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.connectivityCoder = 3; }},
         {"geometry coder 0", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.geometryCoder = 0; }},
         {"geometry coder 5", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.geometryCoder = 5; }},
         {"geometry coder 255", drm::ErrorKind::Unsupported, [](HeaderFields& h) { h.geometryCoder = 255; }},
@@ -364,6 +364,9 @@ TEST(ChecksummedCorruption, OtherValidHeaderValuesAreRefusedOrSound) {
         {"geometry coder 3 (refine) over another payload", [](HeaderFields& h) { h.geometryCoder = 3; }},
         {"geometry coder 4 (sorted) over another payload", [](HeaderFields& h) { h.geometryCoder = 4; }},
         {"geometry coder 2 over a refine payload", [](HeaderFields& h) { if (h.geometryCoder == 3) h.geometryCoder = 2; }},
+        // Format 13: the topological coder over the ranks' sections, and
+        // the ranks over the topological coder's.
+        {"connectivity coders swapped", [](HeaderFields& h) { h.connectivityCoder = uint8_t(3 - h.connectivityCoder); }},
         {"smallest step", [](HeaderFields& h) { h.step = std::numeric_limits<double>::denorm_min(); }},
         {"step 1e300", [](HeaderFields& h) { h.step = 1e300; }},
         {"origin 1e308", [](HeaderFields& h) { h.origin[0] = 1e308; }},

@@ -15,6 +15,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -69,11 +70,15 @@ uint64_t countBoundaryEdges(const drm::Mesh& mesh) {
     return boundary;
 }
 
-class RoundTrip : public ::testing::TestWithParam<std::string> {
+// Each test mesh with each connectivity coder: the smaller file (auto),
+// the distance ranks, and the topological coder.
+class RoundTrip : public ::testing::TestWithParam<std::tuple<std::string, drm::ConnectivityCoder>> {
 protected:
     void SetUp() override {
-        input_ = drm::vcgio::loadMesh(GetParam()).mesh;
-        encoded_ = drm::encode(input_);
+        input_ = drm::vcgio::loadMesh(std::get<0>(GetParam())).mesh;
+        drm::EncodeOptions options;
+        options.connectivity = std::get<1>(GetParam());
+        encoded_ = drm::encode(input_, options);
         decoded_ = drm::decode(encoded_.bytes);
     }
 
@@ -130,6 +135,15 @@ TEST_P(RoundTrip, StatisticsAgreeWithTheInput) {
     EXPECT_EQ(stats.faces, input_.faceCount());
     EXPECT_EQ(stats.totalBytes, encoded_.bytes.size());
     EXPECT_EQ(stats.boundaryEdges, countBoundaryEdges(input_));
+    EXPECT_EQ(encoded_.stats.connectivity, stats.connectivity);
+    if (stats.connectivity == drm::ConnectivityCoder::Topological) {
+        // No ranks: every face's code is 0, and there is no histogram.
+        EXPECT_TRUE(stats.rankHistogram.empty());
+        EXPECT_EQ(encoded_.stats.boundaryEdges, stats.boundaryEdges);
+        EXPECT_EQ(encoded_.stats.connectivityBytes, stats.connectivityBytes);
+        EXPECT_EQ(std::count(encoded_.faceRank.begin(), encoded_.faceRank.end(), 0u), std::ptrdiff_t(input_.faceCount()));
+        return;
+    }
     // One rank code per face except the start triangles, plus one rank-0
     // code per boundary edge.
     const uint64_t codes = std::accumulate(stats.rankHistogram.begin(), stats.rankHistogram.end(), uint64_t(0));
@@ -145,8 +159,14 @@ TEST_P(RoundTrip, StatisticsAgreeWithTheInput) {
     EXPECT_EQ(uint64_t(std::count(encoded_.faceRank.begin(), encoded_.faceRank.end(), 0u)), stats.components);
 }
 
-INSTANTIATE_TEST_SUITE_P(TestData, RoundTrip, ::testing::ValuesIn(testMeshPaths()),
-                         [](const ::testing::TestParamInfo<std::string>& info) { return testNameOf(info.param); });
+INSTANTIATE_TEST_SUITE_P(TestData, RoundTrip,
+                         ::testing::Combine(::testing::ValuesIn(testMeshPaths()),
+                                            ::testing::Values(drm::ConnectivityCoder::Auto, drm::ConnectivityCoder::Ranks,
+                                                              drm::ConnectivityCoder::Topological)),
+                         [](const ::testing::TestParamInfo<std::tuple<std::string, drm::ConnectivityCoder>>& info) {
+                             return testNameOf(std::get<0>(info.param)) + "_" +
+                                    drm::connectivityCoderName(std::get<1>(info.param));
+                         });
 
 TEST(RoundTripData, FindsTheTestMeshes) { EXPECT_GE(testMeshPaths().size(), 8u); }
 

@@ -1,5 +1,5 @@
 // Encoder option sets that between them produce every header flag, both
-// predictors, every geometry coder, the vertex-order section and the
+// predictors, both connectivity coders, every geometry coder, the vertex-order section and the
 // extremes of the quantization range, so files made with them reach every
 // branch of the decoder. Shared by the seed corpus, the robustness tests and
 // the determinism check.
@@ -25,10 +25,25 @@ inline std::vector<NamedOptions> optionSets() {
         // Keep the chosen levers: small meshes would otherwise often be
         // written with none, and their contexts would never be decoded.
         o.tryWithoutLevers = false;
+        // The sets below are about the ranks' branches: with the coder left
+        // to the encoder, a small mesh may come out topological instead.
+        o.connectivity = drm::ConnectivityCoder::Ranks;
         change(o);
         sets.push_back({name, o});
     };
-    add("default", [](drm::EncodeOptions&) {});
+    add("default", [](drm::EncodeOptions& o) { o.connectivity = drm::ConnectivityCoder::Auto; });
+    // Format 13's topological coder: its sections, with copies from a cut,
+    // at the grid's extremes and with the input order kept.
+    add("topological", [](drm::EncodeOptions& o) { o.connectivity = drm::ConnectivityCoder::Topological; });
+    add("topological-bits1-keep-order", [](drm::EncodeOptions& o) {
+        o.connectivity = drm::ConnectivityCoder::Topological;
+        o.bits = 1;
+        o.keepVertexOrder = true;
+    });
+    add("topological-bits21", [](drm::EncodeOptions& o) {
+        o.connectivity = drm::ConnectivityCoder::Topological;
+        o.bits = 21;
+    });
     add("bits4", [](drm::EncodeOptions& o) { o.bits = 4; });
     add("bits21", [](drm::EncodeOptions& o) { o.bits = 21; });
     add("bits1", [](drm::EncodeOptions& o) { o.bits = 1; });  // many vertices share a grid point

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "ranks_only.h"
 #include "drm/drm.h"
 #include "edge_model.h"
 #include "mesh_check.h"
@@ -39,7 +40,7 @@ struct BothWays {
     Encoded with, without;
 };
 BothWays encodeBothWays(const Mesh& mesh) {
-    EncodeOptions on, off;
+    EncodeOptions on = drm_test::ranksOnly(), off = drm_test::ranksOnly();
     on.tryWithoutLevers = off.tryWithoutLevers = false;
     on.searchStarts = off.searchStarts = false;
     off.levers = withoutBoundaryFlag();
@@ -65,7 +66,7 @@ std::vector<std::array<uint32_t, 3>> orientedSet(const std::vector<uint32_t>& t)
 // 8); inside the patch it finds a vertex in its first ball.
 TEST(BoundaryFlag, ClassesTellTheBorderFromTheInside) {
     const Mesh mesh = drm_test::gridPatch(24, false, 0.2, 3);
-    EncodeOptions options;
+    EncodeOptions options = drm_test::ranksOnly();
     options.tryWithoutLevers = false;
     const std::vector<int32_t> grid = encode(mesh, options).quantized;  // input order
     const MeshTopology topology = checkMesh(mesh);

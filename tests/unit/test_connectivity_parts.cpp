@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ranks_only.h"
 #include "connectivity_parts.h"
 #include "drm/drm.h"
 #include "drm_sections.h"
@@ -32,7 +33,7 @@ std::vector<drm_test::NamedMesh> meshesToSplit() {
 TEST(ConnectivityParts, EveryMeshSplitComesBackExactly) {
     for (const drm_test::NamedMesh& m : meshesToSplit()) {
         SCOPED_TRACE(m.name);
-        EncodeOptions options;
+        EncodeOptions options = drm_test::ranksOnly();
         options.connectivityParts = 2;
         options.verify = true;  // decodes the file and compares faces and grid points; throws on a mismatch
         Encoded split;
@@ -48,7 +49,7 @@ TEST(ConnectivityParts, EveryMeshSplitComesBackExactly) {
 TEST(ConnectivityParts, OneThreadAndTwoDecodeTheSameMesh) {
     for (const drm_test::NamedMesh& m : meshesToSplit()) {
         SCOPED_TRACE(m.name);
-        EncodeOptions options;
+        EncodeOptions options = drm_test::ranksOnly();
         options.connectivityParts = 2;
         const Encoded encoded = encode(m.mesh, options);
         DecodeOptions one, two;
@@ -66,7 +67,7 @@ TEST(ConnectivityParts, OneThreadAndTwoDecodeTheSameMesh) {
 TEST(ConnectivityParts, LargeMeshesAreSplitByDefault) {
     const Mesh large = drm_test::gridPatch(128, false, 0.2, 7);  // 32,768 faces
     ASSERT_EQ(large.faceCount(), kTwoPartsFromFaces);
-    EncodeOptions options;
+    EncodeOptions options = drm_test::ranksOnly();
     options.verify = true;
     const Encoded split = encode(large, options);
     EXPECT_EQ(split.stats.connectivityParts, 2);
@@ -74,7 +75,7 @@ TEST(ConnectivityParts, LargeMeshesAreSplitByDefault) {
     EXPECT_EQ(encode(large, options).stats.connectivityParts, 1);
     const Mesh smaller = drm_test::gridPatch(126, false, 0.2, 7);
     ASSERT_LT(smaller.faceCount(), kTwoPartsFromFaces);
-    EXPECT_EQ(encode(smaller).stats.connectivityParts, 1);
+    EXPECT_EQ(encode(smaller, drm_test::ranksOnly()).stats.connectivityParts, 1);
     EXPECT_EQ(inspect(split.bytes).stats.connectivityParts, 2);
 }
 
@@ -82,7 +83,7 @@ TEST(ConnectivityParts, LargeMeshesAreSplitByDefault) {
 // on one thread or two (the thread of part 2 is waited for, and told to
 // stop, before the error leaves decode()).
 TEST(ConnectivityParts, CancelStopsBothParts) {
-    const Encoded split = encode(drm_test::gridPatch(128, false, 0.2, 7));
+    const Encoded split = encode(drm_test::gridPatch(128, false, 0.2, 7), drm_test::ranksOnly());
     ASSERT_EQ(split.stats.connectivityParts, 2);
     for (int threads : {1, 2}) {
         SCOPED_TRACE(threads);
@@ -101,7 +102,7 @@ TEST(ConnectivityParts, CancelStopsBothParts) {
 TEST(ConnectivityParts, OptionsOutOfRangeAreRefused) {
     const Mesh mesh = drm_test::icosphere(2);
     for (int parts : {-1, 3}) {
-        EncodeOptions options;
+        EncodeOptions options = drm_test::ranksOnly();
         options.connectivityParts = parts;
         try {
             encode(mesh, options);
@@ -111,7 +112,7 @@ TEST(ConnectivityParts, OptionsOutOfRangeAreRefused) {
             EXPECT_NE(std::string(e.what()).find("connectivity parts"), std::string::npos) << e.what();
         }
     }
-    const Encoded encoded = encode(mesh);
+    const Encoded encoded = encode(mesh, drm_test::ranksOnly());
     DecodeOptions negative;
     negative.threads = -1;
     EXPECT_THROW(decode(encoded.bytes.data(), encoded.bytes.size(), negative), Error);
@@ -124,7 +125,7 @@ TEST(ConnectivityParts, OptionsOutOfRangeAreRefused) {
 TEST(ConnectivityParts, FirstPartStartingPastItsVerticesIsCorrupt) {
     Mesh mesh = drm_test::icosphere(2);
     drm_test::addVertex(mesh, -10, -10, -10);  // grid point (0, 0, 0): vertex 0, in no face
-    EncodeOptions options;
+    EncodeOptions options = drm_test::ranksOnly();
     options.connectivityParts = 2;
     const Encoded encoded = encode(mesh, options);
     ASSERT_EQ(encoded.stats.connectivityParts, 2);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <numeric>
 
+#include "ranks_only.h"
 #include "drm/drm.h"
 #include "edge_model.h"
 #include "gap_closing.h"
@@ -36,7 +37,7 @@ Levers withoutFront() {
 // "Format 5"), vertex by vertex.
 TEST(EdgeModel, RanksInTheOrderNotUsedMatchFullOrders) {
     const Mesh mesh = trayBottom();
-    EncodeOptions options;
+    EncodeOptions options = drm_test::ranksOnly();
     options.tryWithoutLevers = false;
     const std::vector<int32_t> grid = encode(mesh, options).quantized;  // input order
     const MeshTopology topology = checkMesh(mesh);
@@ -119,7 +120,7 @@ TEST(EdgeModel, RanksInTheOrderNotUsedMatchFullOrders) {
 // Before format 5 the lever does nothing, whatever the levers say.
 TEST(EdgeModel, FrontLeverNeedsFormat5) {
     const Mesh mesh = trayBottom();
-    const std::vector<int32_t> grid = encode(mesh).quantized;
+    const std::vector<int32_t> grid = encode(mesh, drm_test::ranksOnly()).quantized;
     const std::unique_ptr<SpatialIndex> index = makeSpatialIndex(grid, NeighbourIndex::Grid, IndexRole::Traversal);
     Traversal traversal(mesh.vertexCount(), mesh.faceCount(), index.get());
     const EdgeModel v4(grid, 12, Predictor::Midpoint, false, Levers(), mesh.faceCount(), *index, traversal, 4);
@@ -135,7 +136,7 @@ uint64_t codeCount(const Stats& s) { return std::accumulate(s.rankHistogram.begi
 // file decodes to the same mesh.
 TEST(EdgeModel, FrontLeverOnCadSlivers) {
     const Mesh mesh = trayBottom();
-    EncodeOptions on, off;
+    EncodeOptions on = drm_test::ranksOnly(), off = drm_test::ranksOnly();
     on.tryWithoutLevers = off.tryWithoutLevers = false;
     off.levers = withoutFront();
     const Encoded withFront = encode(mesh, on), without = encode(mesh, off);

@@ -209,12 +209,12 @@ TEST(GeometryTree, ReadsASectionInItsFormatVersionsSyntax) {
             for (int k = 0; k < 3; ++k) expected[3 * d + k] = grid[3 * size_t(encoded.order[d]) + k];
         EXPECT_EQ(asWritten, expected);
         // Format 7 changed the frame and the tangent signs, format 6 the sign
-        // models (formats 4, 5, 8, 9, 10, 11 and 12 the connectivity only): every
+        // models (formats 4, 5, 8, 9, 10, 11, 12 and 13 the connectivity only): every
         // older version misreads the section, but for one thing: a section
         // that never uses the frame (bit G = 0) reads the same in format 6.
         // Both meshes use it (a scan, and fandisk's curved patches).
         constexpr int kLastGeometryChange = 7;
-        static_assert(kFileFormatVersion == 12, "a geometry reader per version: say which read alike");
+        static_assert(kFileFormatVersion == 13, "a geometry reader per version: say which read alike");
         EXPECT_EQ(decodeGeometryTree(encoded.bytes.data(), encoded.bytes.size(), n, 12, kLastGeometryChange), expected);
         const bool framed = encoded.framedResiduals > 0;
         EXPECT_TRUE(framed);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ranks_only.h"
 #include "drm/drm.h"
 #include "morton.h"
 #include "morton_order.h"
@@ -69,7 +70,7 @@ TEST(MortonNumbering, DecodedVerticesComeInMortonOrder) {
         SCOPED_TRACE(name);
         const Mesh mesh = meshOf(name);
         for (GeometryCoder coder : {GeometryCoder::Auto, GeometryCoder::Sorted, GeometryCoder::Refine}) {
-            EncodeOptions options;
+            EncodeOptions options = drm_test::ranksOnly();
             options.geometry = coder;
             options.refineBits = 3;
             options.searchStarts = false;  // so the section's order is not tried (small meshes)
@@ -90,7 +91,7 @@ TEST(MortonNumbering, DecodedVerticesComeInMortonOrder) {
 // Raw bits keep the input's order, and so the vertex section's numbering.
 TEST(MortonNumbering, RawBitsKeepTheInputOrder) {
     const Mesh mesh = meshOf("fandisk.ply");
-    EncodeOptions options;
+    EncodeOptions options = drm_test::ranksOnly();
     options.geometry = GeometryCoder::Raw;
     for (int threads : {1, 2}) {
         options.threads = threads;
@@ -112,7 +113,7 @@ TEST(MortonNumbering, SmallMeshesKeepEitherNumbering) {
     for (const char* name : {"torus.ply", "tray-bottom.ply", "bunny-lres.ply", "blobby-3cc.ply"}) {
         SCOPED_TRACE(name);
         const Mesh mesh = meshOf(name);
-        const Encoded encoded = encode(mesh, EncodeOptions());
+        const Encoded encoded = encode(mesh, drm_test::ranksOnly());
         const Decoded decoded = decode(encoded.bytes);
         EXPECT_EQ(decoded.stats.mortonNumbering, encoded.stats.mortonNumbering);
         kept.push_back(encoded.stats.mortonNumbering);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ranks_only.h"
 #include "drm/drm.h"
 #include "file_format.h"
 #include "edge_model.h"
@@ -152,7 +153,7 @@ struct StartGaps {
 
 TEST(StartTriangle, DecoderRefusesStartTrianglesNoEncoderWrites) {
     const Mesh mesh = drm_test::icosphere(1);  // 42 vertices
-    const std::vector<uint8_t> file = encode(mesh).bytes;
+    const std::vector<uint8_t> file = encode(mesh, drm_test::ranksOnly()).bytes;
     const uint32_t n = uint32_t(readFile(file.data(), file.size()).header.vertexCount);
     ASSERT_EQ(n, 42u);
     const StartGaps cases[] = {
@@ -244,7 +245,7 @@ std::vector<uint8_t> recodeConnectivity(const std::vector<uint8_t>& file, size_t
 // on and the jump table is in use: blobby-3cc's three components.
 TEST(StartTriangle, DecoderRefusesImpossibleStartsOfLaterComponents) {
     const Mesh mesh = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/blobby-3cc.ply");
-    EncodeOptions options;
+    EncodeOptions options = drm_test::ranksOnly();
     options.geometry = GeometryCoder::SpanningTree;
     const std::vector<uint8_t> file = encode(mesh, options).bytes;
     const FileParts parts = readFile(file.data(), file.size());
@@ -284,7 +285,7 @@ TEST(StartTriangle, SearchingStartsNeverGrowsAFile) {
                              "mech-holes-shark.ply", "star-cgal.ply"}) {
         SCOPED_TRACE(name);
         const Mesh mesh = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/" + name);
-        EncodeOptions search, smallest;
+        EncodeOptions search = drm_test::ranksOnly(), smallest = drm_test::ranksOnly();
         search.verify = smallest.verify = true;
         smallest.searchStarts = false;
         const size_t searched = encode(mesh, search).bytes.size(), plain = encode(mesh, smallest).bytes.size();
@@ -302,7 +303,7 @@ TEST(StartTriangle, ComponentsAmongIsolatedVerticesRoundTrip) {
     Mesh mesh = drm_test::append(drm_test::icosphere(1), drm_test::tetrahedron(), 3, 0, 0);
     mesh = drm_test::append(mesh, drm_test::gridPatch(4, true), 0, 3, 0);
     for (int i = 0; i < 5; ++i) drm_test::addVertex(mesh, float(-2 - i), 0.5f * float(i), 1.0f);
-    EncodeOptions options;
+    EncodeOptions options = drm_test::ranksOnly();
     options.verify = true;  // decodes the file and compares grid points and oriented faces
     const Encoded encoded = encode(mesh, options);
     EXPECT_EQ(encoded.stats.components, 3u);

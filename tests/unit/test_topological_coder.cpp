@@ -20,6 +20,8 @@ namespace {
 struct Prepared {
     std::vector<int32_t> grid;
     std::vector<uint32_t> triangles;
+    std::vector<uint32_t> copyOf;
+    size_t originals = 0;
 };
 
 // The mesh at 12 bits, cut as the encoder cuts it (copies of a vertex share
@@ -31,7 +33,14 @@ Prepared prepare(const Mesh& mesh) {
     out.grid = grid;
     for (uint32_t original : cut.copyOf) out.grid.insert(out.grid.end(), grid.begin() + 3 * original, grid.begin() + 3 * original + 3);
     out.triangles = std::move(cut.triangles);
+    out.copyOf = std::move(cut.copyOf);
+    out.originals = mesh.vertexCount();
     return out;
+}
+
+TopologicalMesh decodeStreams(const TopologicalStreams& s, const Prepared& in, size_t faces) {
+    return decodeTopological(s.connectivity.data(), s.connectivity.size(), s.geometry.data(), s.geometry.size(), in.originals,
+                             in.copyOf.size(), faces, 12);
 }
 
 using Face = std::array<uint32_t, 3>;
@@ -51,10 +60,27 @@ std::multiset<Face> orientedFaces(const std::vector<uint32_t>& t, const std::vec
 void expectRoundTrip(const std::string& name, const Mesh& mesh) {
     SCOPED_TRACE(name);
     const Prepared in = prepare(mesh);
-    std::vector<uint32_t> order;
-    const TopologicalStreams streams = encodeTopological(in.grid, 12, in.triangles, &order);
-    const TopologicalMesh out = decodeTopological(streams, in.grid.size() / 3, in.triangles.size() / 3, 12);
+    TopologicalLayout layout;
+    const TopologicalStreams streams = encodeTopological(in.grid, 12, in.triangles, in.copyOf, &layout);
+    const TopologicalMesh out = decodeStreams(streams, in, in.triangles.size() / 3);
+    const std::vector<uint32_t>& order = layout.vertexOf;
     ASSERT_EQ(out.grid.size(), in.grid.size());
+    EXPECT_EQ(out.triangles, layout.triangles);
+    EXPECT_EQ(out.components, layout.components);
+    // Originals first, then the copies, in the order of their originals.
+    for (size_t id = 0; id < order.size(); ++id) EXPECT_EQ(order[id] >= in.originals, id >= in.originals) << "vertex " << id;
+    std::vector<uint32_t> decodedOf(order.size());
+    for (size_t id = 0; id < order.size(); ++id) decodedOf[order[id]] = uint32_t(id);
+    for (size_t k = 1; k < in.copyOf.size(); ++k)
+        EXPECT_LE(decodedOf[in.copyOf[order[in.originals + k - 1] - in.originals]],
+                  decodedOf[in.copyOf[order[in.originals + k] - in.originals]]);
+    // Each decoded face is the input face the layout says, same orientation.
+    ASSERT_EQ(layout.faceOf.size(), in.triangles.size() / 3);
+    for (size_t f = 0; f < layout.faceOf.size(); ++f) {
+        std::vector<uint32_t> one(out.triangles.begin() + 3 * f, out.triangles.begin() + 3 * f + 3);
+        std::vector<uint32_t> theirs(in.triangles.begin() + 3 * layout.faceOf[f], in.triangles.begin() + 3 * layout.faceOf[f] + 3);
+        ASSERT_EQ(orientedFaces(one, &order), orientedFaces(theirs)) << "face " << f;
+    }
     ASSERT_EQ(order.size(), in.grid.size() / 3);
     std::vector<uint8_t> seen(order.size(), 0);
     for (size_t id = 0; id < order.size(); ++id) {
@@ -83,32 +109,38 @@ TEST(TopologicalCoder, TestMeshesComeBackRenumberedInTheOrderMet) {
 TEST(TopologicalCoder, CodesSliversInFewerBitsThanDistanceRanks) {
     const Mesh mesh = drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/tray-bottom.ply");
     const Prepared in = prepare(mesh);
-    const TopologicalStreams streams = encodeTopological(in.grid, 12, in.triangles);
-    const uint64_t ranked = encode(mesh).stats.connectivityBytes;
+    const TopologicalStreams streams = encodeTopological(in.grid, 12, in.triangles, in.copyOf);
+    EncodeOptions ranks;
+    ranks.connectivity = ConnectivityCoder::Ranks;
+    const uint64_t ranked = encode(mesh, ranks).stats.connectivityBytes;
     EXPECT_LT(2 * streams.connectivity.size(), ranked) << "topological " << streams.connectivity.size() << " bytes, ranked " << ranked;
 }
 
 TEST(TopologicalCoder, BrokenStreamsAreRefused) {
     const Prepared in = prepare(drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/fandisk.ply"));
-    const size_t vertices = in.grid.size() / 3, faces = in.triangles.size() / 3;
-    const TopologicalStreams streams = encodeTopological(in.grid, 12, in.triangles);
+    const size_t faces = in.triangles.size() / 3;
+    const TopologicalStreams streams = encodeTopological(in.grid, 12, in.triangles, in.copyOf);
     TopologicalStreams cut = streams;
     cut.connectivity.resize(cut.connectivity.size() / 2);
-    EXPECT_THROW(decodeTopological(cut, vertices, faces, 12), Error);
+    EXPECT_THROW(decodeStreams(cut, in, faces), Error);
     cut = streams;
     cut.geometry.resize(cut.geometry.size() / 2);
-    EXPECT_THROW(decodeTopological(cut, vertices, faces, 12), Error);
+    EXPECT_THROW(decodeStreams(cut, in, faces), Error);
     // Every byte of the connectivity flipped in turn: decoding either throws
     // Error or gives some mesh, never crashes or hangs.
     for (size_t at = 0; at < streams.connectivity.size(); at += 7) {
         TopologicalStreams damaged = streams;
         damaged.connectivity[at] ^= 0x5A;
         try {
-            decodeTopological(damaged, vertices, faces, 12);
+            decodeStreams(damaged, in, faces);
         } catch (const Error&) {
         }
     }
-    EXPECT_THROW(decodeTopological(streams, vertices, faces + 5, 12), Error);
+    EXPECT_THROW(decodeStreams(streams, in, faces + 5), Error);
+    // A header claiming far more vertices than the bytes can hold.
+    EXPECT_THROW(decodeTopological(streams.connectivity.data(), streams.connectivity.size(), streams.geometry.data(),
+                                   streams.geometry.size(), size_t(1) << 31, 0, faces, 12),
+                 Error);
 }
 
 }  // namespace

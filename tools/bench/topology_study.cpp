@@ -37,8 +37,10 @@ int main(int argc, char** argv) {
             for (uint32_t original : cut.copyOf)
                 cutGrid.insert(cutGrid.end(), grid.begin() + 3 * original, grid.begin() + 3 * original + 3);
             drm::TopologicalStats stats;
-            const drm::TopologicalStreams streams = drm::encodeTopological(cutGrid, 12, cut.triangles, nullptr, &stats);
-            const drm::TopologicalMesh back = drm::decodeTopological(streams, cutGrid.size() / 3, cut.triangles.size() / 3, 12);
+            const drm::TopologicalStreams streams = drm::encodeTopological(cutGrid, 12, cut.triangles, cut.copyOf, nullptr, &stats);
+            const drm::TopologicalMesh back =
+                drm::decodeTopological(streams.connectivity.data(), streams.connectivity.size(), streams.geometry.data(),
+                                       streams.geometry.size(), mesh.vertexCount(), cut.copyOf.size(), cut.triangles.size() / 3, 12);
             if (back.triangles.size() != cut.triangles.size()) throw std::runtime_error("round trip lost faces");
             const double v = double(mesh.vertexCount());
             const drm::Stats& s = encoded.stats;

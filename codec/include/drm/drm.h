@@ -81,9 +81,9 @@ constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
 // The .drm format version this library writes, and the range it reads
 // (docs/format.md, "Versions").
-constexpr int kFileFormatVersion = 12;
+constexpr int kFileFormatVersion = 13;
 constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 12;
+constexpr int kNewestReadableFormatVersion = 13;
 
 // The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
 // MeshLab rank filter, README's legend): bucket 0 is a component's start
@@ -184,6 +184,20 @@ enum class GeometryCoder : uint8_t {
                        // for scattered points that predict no better than nothing
                        // (the encoder falls back to raw where that is smaller)
 };
+
+// How the connectivity is coded (the connectivity section).
+enum class ConnectivityCoder : uint8_t {
+    Auto = 0,         // an option only, never stored: the distance ranks, and the
+                      // topological coder too where a mesh's ranks cost many bits;
+                      // the smaller file wins
+    Ranks = 1,        // the paper's distance ranks over the vertex set coded first
+    Topological = 2,  // format 13: each triangle's apex named by topology (a new
+                      // vertex, a fan's far end, or another front vertex by rank),
+                      // positions coded in the order the walk meets them; no ranks
+};
+const char* connectivityCoderName(ConnectivityCoder c);
+// Parses "auto", "ranks", "topological"; throws Error otherwise.
+ConnectivityCoder parseConnectivityCoder(const std::string& name);
 
 const char* geometryCoderName(GeometryCoder g);
 // Parses "auto", "raw", "tree", "refine", "sorted"; throws Error otherwise.
@@ -331,6 +345,11 @@ struct EncodeOptions {
     // does where the mesh has two vertices and a face (a small mesh pays
     // for the seam: for tests).
     int connectivityParts = 0;
+    // Ranks codes the paper's distance ranks (every face gets a rank code:
+    // Encoded::faceRank); Topological the connectivity by topology and the
+    // positions in the order it meets them (docs/format.md, "Format 13");
+    // Auto tries both where the ranks are costly and keeps the smaller file.
+    ConnectivityCoder connectivity = ConnectivityCoder::Auto;
     Progress progress;                      // may be empty
 };
 
@@ -357,6 +376,9 @@ struct Stats {
     // Format 11: the connectivity in two parts that decode side by side
     // (EncodeOptions::connectivityParts), else 1.
     int connectivityParts = 1;
+    // Format 13: Ranks, or Topological (then no face has a rank: faceRank
+    // is all 0, the rank histogram empty, and `geometry` means nothing).
+    ConnectivityCoder connectivity = ConnectivityCoder::Ranks;
     uint64_t headerBytes = 0;
     uint64_t connectivityBytes = 0;
     uint64_t geometryBytes = 0;
