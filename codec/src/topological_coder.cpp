@@ -250,6 +250,8 @@ struct Truth {
     std::vector<uint32_t> idOf, inputOf;  // input vertex <-> walk id
     std::vector<uint32_t> faceOf;         // rebuilt face -> input face
     MeshTopology topology;
+    uint64_t giveUpAbove = 0;  // TopologicalBudget's
+    bool gaveUp = false;
 };
 
 // Encoder and decoder in one: with a Writer the symbols come from `truth`,
@@ -379,7 +381,16 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
                     throw Error(Io::kEncoding ? ErrorKind::Internal : ErrorKind::Corrupt,
                                 Io::kEncoding ? "internal error: an apex the walk cannot take" : "corrupt file: an impossible triangle");
                 st.traversal.attachApex(edge, apex);
-                if constexpr (Io::kEncoding) truth->faceOf.push_back(face);
+                if constexpr (Io::kEncoding) {
+                    truth->faceOf.push_back(face);
+                    const uint64_t done = st.traversal.triangleCount();
+                    if (truth->giveUpAbove != 0 && done % 4096 == 0 && 4 * done >= st.faceCount &&
+                        double(connectivity.coder.bytesAtLeast() + geometry.coder.bytesAtLeast()) * double(st.faceCount) >
+                            double(truth->giveUpAbove) * double(done)) {
+                        truth->gaveUp = true;
+                        return;
+                    }
+                }
             }
             st.leaveIfCulled(edge.vi);
             st.leaveIfCulled(edge.vj);
@@ -417,7 +428,8 @@ void codeCopies(Io& io, std::vector<uint32_t>& walkIds, size_t vertices) {
 }  // namespace
 
 TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits, const std::vector<uint32_t>& triangles,
-                                     const std::vector<uint32_t>& copyOf, TopologicalLayout* layout, TopologicalStats* stats) {
+                                     const std::vector<uint32_t>& copyOf, TopologicalLayout* layout, TopologicalStats* stats,
+                                     const TopologicalBudget& budget) {
     const size_t vertexCount = grid.size() / 3, faceCount = triangles.size() / 3;
     if (bits < 1 || bits > 21) throw Error("topological coder: bits must be 1 to 21");
     if (copyOf.size() > vertexCount) throw Error("topological coder: more copies than vertices");
@@ -425,13 +437,23 @@ TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits,
     for (uint32_t original : copyOf)
         if (original >= firstCopy) throw Error("topological coder: a copy of a copy or of no vertex");
     Truth truth(grid, triangles, vertexCount);
-    const std::string problem = topologyProblem(triangles, vertexCount, &truth.topology);
-    if (!problem.empty()) throw Error("topological coder: " + problem);
+    if (budget.meshChecked) {
+        buildTopology(triangles, vertexCount, &truth.topology);
+    } else {
+        const std::string problem = topologyProblem(triangles, vertexCount, &truth.topology);
+        if (!problem.empty()) throw Error("topological coder: " + problem);
+    }
+    truth.giveUpAbove = budget.giveUpAbove;
     WalkState st(vertexCount, faceCount, bits);
     RangeEncoder connectivityCoder, geometryCoder;
     Writer connectivity{connectivityCoder}, geometry{geometryCoder};
     if (stats) *stats = TopologicalStats();
     walk(connectivity, geometry, st, &truth, stats);
+    if (truth.gaveUp) {
+        TopologicalStreams none;
+        none.complete = false;
+        return none;
+    }
     if (st.traversal.triangleCount() != faceCount)
         throw Error(ErrorKind::Internal, "internal error: the topological walk rebuilt another face count");
 

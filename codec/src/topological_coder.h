@@ -44,6 +44,18 @@ namespace drm {
 struct TopologicalStreams {
     std::vector<uint8_t> connectivity;  // symbols, the ranks of other vertices, the copies' places
     std::vector<uint8_t> geometry;      // positions, in the order the walk meets them
+    bool complete = true;               // false: given up (TopologicalBudget), both empty
+};
+
+// What an encoder comparing coders can tell this one.
+struct TopologicalBudget {
+    // The mesh passed topologyProblem already (as the caller's cut mesh
+    // does): not checked again (a sixth of the coder's time on horse).
+    bool meshChecked = false;
+    // Give up once a quarter of the faces or more is coded and the bytes so
+    // far, scaled to every face, pass this (0: never): the other coder's
+    // file is then almost surely the smaller.
+    uint64_t giveUpAbove = 0;
 };
 
 // Where an encoding's bits went (for studies; not stored anywhere).
@@ -76,7 +88,7 @@ struct TopologicalLayout {
 // vertex). Throws Error on a mesh the walk cannot take.
 TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits, const std::vector<uint32_t>& triangles,
                                      const std::vector<uint32_t>& copyOf, TopologicalLayout* layout = nullptr,
-                                     TopologicalStats* stats = nullptr);
+                                     TopologicalStats* stats = nullptr, const TopologicalBudget& budget = TopologicalBudget());
 
 struct TopologicalMesh {
     std::vector<int32_t> grid;        // x, y, z per decoded vertex, copies included
