@@ -121,6 +121,8 @@ void decodeTopologically(Decoding& d) {
     if (decoded.components != header.componentCount)
         throw Error(ErrorKind::Corrupt, "corrupt file: the header counts " + std::to_string(header.componentCount) +
                     " components, the connectivity section " + std::to_string(decoded.components));
+    if (decoded.copyOf != d.copyOf())
+        throw Error(ErrorKind::Corrupt, "corrupt file: the repairs section's vertex copies are not those the connectivity section meets");
     d.result.quantized = std::move(decoded.grid);
     d.result.mesh.triangles = std::move(decoded.triangles);
     d.result.faceRank.assign(d.traversalFaces, 0);  // no ranks

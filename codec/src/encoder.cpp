@@ -1197,8 +1197,15 @@ std::optional<Attempt> encodeTopologically(const Mesh& mesh, const PreparedMesh&
     budget.giveUpAbove = giveUpAbove;
     TopologicalStreams streams = encodeTopological(grid, prepared.grid.bits, *prepared.triangles, cut.copyOf, &layout, nullptr, budget);
     if (!streams.complete) return std::nullopt;
-    std::vector<uint32_t> decodedIndex(originals + copies);
-    for (size_t d = 0; d < layout.vertexOf.size(); ++d) decodedIndex[layout.vertexOf[d]] = uint32_t(d);
+    // Decoded vertex -> input vertex: of an input vertex and its copies, the
+    // one the walk met first is decoded as the original.
+    std::vector<uint32_t> order(originals);
+    std::vector<uint32_t> decodedIndex(originals);  // input vertex -> decoded
+    for (size_t d = 0; d < originals; ++d) {
+        const uint32_t v = layout.vertexOf[d];
+        order[d] = v < originals ? v : cut.copyOf[v - originals];
+        decodedIndex[order[d]] = uint32_t(d);
+    }
 
     Attempt attempt;
     Encoded& result = attempt.encoded;
@@ -1220,8 +1227,7 @@ std::optional<Attempt> encodeTopologically(const Mesh& mesh, const PreparedMesh&
     Repairs inDecodedOrder;
     if (prepared.repaired) {
         inDecodedOrder = prepared.repairs;
-        inDecodedOrder.copyOf.resize(copies);
-        for (size_t r = 0; r < copies; ++r) inDecodedOrder.copyOf[r] = decodedIndex[cut.copyOf[layout.vertexOf[originals + r] - originals]];
+        inDecodedOrder.copyOf = layout.copyOf;
         inDecodedOrder.looseTriangles.resize(cut.looseTriangles.size());
         for (size_t c = 0; c < cut.looseTriangles.size(); ++c) inDecodedOrder.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
         std::vector<uint32_t> positionOf(faceCount);
@@ -1232,7 +1238,6 @@ std::optional<Attempt> encodeTopologically(const Mesh& mesh, const PreparedMesh&
         for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
         attempt.repairs = encodeRepairs(inDecodedOrder, originals);
     }
-    std::vector<uint32_t> order(layout.vertexOf.begin(), layout.vertexOf.begin() + originals);  // decoded -> input
     if (options.keepVertexOrder) attempt.vertexOrder = encodeVertexOrder(order);
     attempt.decodedTriangles = std::move(layout.triangles);
     if (prepared.repaired) undoCut(attempt.decodedTriangles, inDecodedOrder, originals);

@@ -1,6 +1,7 @@
 #include "topological_coder.h"
 
 #include <algorithm>
+#include <unordered_map>
 #include <string>
 
 #include "admissibility.h"
@@ -46,6 +47,7 @@ struct Models {
     AxisModels newVertex[3], start[3], isolated[3];
     AxisModels otherRank;
     BitModel noSign;  // ranks are never negative: this model learns that at once
+    BitModel isCopy;  // a vertex met at an earlier original's grid point copies one
     // Per triangle class, each predictor's recent errors (L1, decaying).
     int64_t predictorScore[3][3] = {};
 
@@ -113,6 +115,12 @@ struct WalkState {
     Admissibility admissible;
     uint32_t met = 0;  // vertices met: walk ids 0 .. met - 1
     uint64_t components = 0, boundaryEdges = 0;
+    // With copies (a cut mesh): the originals met at each grid point, and
+    // per walk id the original it copies (kNoVertex: it is one).
+    bool copies = false;
+    std::unordered_map<uint64_t, std::vector<uint32_t>> originalsAt;
+    std::vector<uint32_t> originalOf;
+    uint32_t copiesMet = 0;
     std::vector<uint32_t> front, slotOf;
     Models models;
 
@@ -252,6 +260,13 @@ struct Truth {
     MeshTopology topology;
     uint64_t giveUpAbove = 0;  // TopologicalBudget's
     bool gaveUp = false;
+    // The cut's copies: vertex firstCopy + k copies copyOf[k]. A vertex's
+    // group is the vertex it stands for; the first of a group the walk
+    // meets is coded as the original, whichever the cut made so.
+    size_t firstCopy = 0;
+    const std::vector<uint32_t>* copyOf = nullptr;
+    std::vector<uint32_t> groupOriginal;  // group -> walk id of its original, once met
+    uint32_t groupOf(uint32_t v) const { return v < firstCopy ? v : (*copyOf)[v - firstCopy]; }
 };
 
 // Encoder and decoder in one: with a Writer the symbols come from `truth`,
@@ -278,6 +293,39 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
     };
     uint32_t nextInput = 0;  // encoder: no input vertex below it is left unmet
     const int32_t* none = nullptr;
+    // After vertex v's position: in a mesh with copies, a vertex met at the
+    // grid point of an original met before says whether it copies one (and
+    // which, if several are there); the first of its group is an original.
+    auto noteMet = [&](uint32_t v) {
+        if (!st.copies) return;
+        const uint64_t key = (uint64_t(component(st.grid, v, 0)) << 42) | (uint64_t(component(st.grid, v, 1)) << 21) |
+                             uint64_t(component(st.grid, v, 2));
+        std::vector<uint32_t>& there = st.originalsAt[key];
+        uint32_t original = kNoVertex;
+        if (!there.empty()) {
+            int copy = 0;
+            uint32_t index = 0;
+            if constexpr (Io::kEncoding) {
+                original = truth->groupOriginal[truth->groupOf(truth->inputOf[v])];
+                copy = original != kNoVertex;
+                if (copy) index = uint32_t(std::find(there.begin(), there.end(), original) - there.begin());
+            }
+            if (connectivity.bit(st.models.isCopy, copy)) {
+                if (there.size() > 1) index = connectivity.plain(index, bitLength(uint64_t(there.size() - 1)));
+                if (index >= there.size()) throw Error(ErrorKind::Corrupt, "corrupt file: a vertex copies an original that is not there");
+                original = there[index];
+            } else {
+                original = kNoVertex;
+            }
+        }
+        if (original == kNoVertex) {
+            there.push_back(v);
+            if constexpr (Io::kEncoding) truth->groupOriginal[truth->groupOf(truth->inputOf[v])] = v;
+        } else {
+            st.originalOf[v] = original;
+            ++st.copiesMet;
+        }
+    };
     while (st.traversal.triangleCount() < st.faceCount) {
         // A new component: its first face's three vertices are the next
         // three ids (the manifold cut leaves no vertex in two components).
@@ -303,6 +351,9 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
         codePosition(geometry, st.models.start, 1, fromB, at[2], st, c);
         if (stats) stats->otherPositionBits += spent(geometry, geometryMark);
         st.met += 3;
+        noteMet(a);
+        noteMet(b);
+        noteMet(c);
         ++st.components;
         st.traversal.startComponent(a, b, c);
         st.enter(a);
@@ -355,6 +406,7 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
                     apex = st.met++;
                     codeNewVertex(geometry, st, edge, predicted, actual, apex);
                     if (stats) stats->newVertexBits += spent(geometry, geometryMark);
+                    noteMet(apex);
                     st.enter(apex);
                 } else if (symbol == kEndAtI || symbol == kEndAtJ) {
                     apex = symbol == kEndAtI ? ends.atI : ends.atJ;
@@ -412,17 +464,31 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
         codePosition(geometry, st.models.isolated, 0, from, actual, st, v);
         if (stats) stats->otherPositionBits += spent(geometry, geometryMark);
         st.met = v + 1;
+        noteMet(v);
     }
 }
 
-// The copies' walk ids, in the decoded order of copies (by the decoded
-// index of the vertex each copies, then by walk id), each in as many plain
-// bits as a walk id needs: a cut makes few copies (cycloidal, the corpus's
-// most: 750 of 22,134 vertices).
-template <class Io>
-void codeCopies(Io& io, std::vector<uint32_t>& walkIds, size_t vertices) {
-    const int width = std::max(1, bitLength(uint64_t(vertices - 1)));
-    for (uint32_t& w : walkIds) w = io.plain(w, width);
+// The decoded numbering of the walk's vertices: the originals in walk order,
+// then the copies by the decoded index of their original, then walk id.
+// Fills decodedOf (walk id -> decoded index) and copyOf (per copy, the
+// decoded index of its original).
+void numberDecoded(const WalkState& st, std::vector<uint32_t>& decodedOf, std::vector<uint32_t>& copyOf) {
+    const size_t n = st.vertexCount;
+    decodedOf.assign(n, kNoVertex);
+    std::vector<uint32_t> copies;
+    uint32_t next = 0;
+    for (uint32_t w = 0; w < n; ++w) {
+        if (!st.copies || st.originalOf[w] == kNoVertex) decodedOf[w] = next++;
+        else copies.push_back(w);
+    }
+    std::sort(copies.begin(), copies.end(), [&](uint32_t a, uint32_t b) {
+        return std::make_pair(decodedOf[st.originalOf[a]], a) < std::make_pair(decodedOf[st.originalOf[b]], b);
+    });
+    copyOf.clear();
+    for (uint32_t w : copies) {
+        copyOf.push_back(decodedOf[st.originalOf[w]]);
+        decodedOf[w] = next++;
+    }
 }
 
 }  // namespace
@@ -444,7 +510,12 @@ TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits,
         if (!problem.empty()) throw Error("topological coder: " + problem);
     }
     truth.giveUpAbove = budget.giveUpAbove;
+    truth.firstCopy = firstCopy;
+    truth.copyOf = &copyOf;
+    truth.groupOriginal.assign(firstCopy, kNoVertex);
     WalkState st(vertexCount, faceCount, bits);
+    st.copies = !copyOf.empty();
+    if (st.copies) st.originalOf.assign(vertexCount, kNoVertex);
     RangeEncoder connectivityCoder, geometryCoder;
     Writer connectivity{connectivityCoder}, geometry{geometryCoder};
     if (stats) *stats = TopologicalStats();
@@ -457,30 +528,23 @@ TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits,
     if (st.traversal.triangleCount() != faceCount)
         throw Error(ErrorKind::Internal, "internal error: the topological walk rebuilt another face count");
 
-    // Decoded numbering: the originals in walk order, then the copies.
-    std::vector<uint32_t> decodedOf(vertexCount);  // walk id -> decoded index
-    std::vector<uint32_t> copies;                  // walk ids of the copies
-    uint32_t next = 0;
-    for (uint32_t w = 0; w < vertexCount; ++w) {
-        if (truth.inputOf[w] < firstCopy) decodedOf[w] = next++;
-        else copies.push_back(w);
-    }
-    auto originalOf = [&](uint32_t w) { return decodedOf[truth.idOf[copyOf[truth.inputOf[w] - firstCopy]]]; };
-    std::sort(copies.begin(), copies.end(), [&](uint32_t a, uint32_t b) {
-        return std::make_pair(originalOf(a), a) < std::make_pair(originalOf(b), b);
-    });
-    for (uint32_t w : copies) decodedOf[w] = next++;
-    codeCopies(connectivity, copies, vertexCount);
+    if (st.copiesMet != copyOf.size()) throw Error(ErrorKind::Internal, "internal error: the topological walk met another copy count");
+    std::vector<uint32_t> decodedOf, copiesOf;
+    numberDecoded(st, decodedOf, copiesOf);
     if (layout) {
         layout->vertexOf.assign(vertexCount, 0);
         for (uint32_t w = 0; w < vertexCount; ++w) layout->vertexOf[decodedOf[w]] = truth.inputOf[w];
         layout->faceOf = std::move(truth.faceOf);
         layout->triangles = st.traversal.takeTriangles();
         for (uint32_t& v : layout->triangles) v = decodedOf[v];
+        layout->copyOf = std::move(copiesOf);
         layout->components = st.components;
         layout->boundaryEdges = st.boundaryEdges;
     }
-    return {connectivityCoder.finish(), geometryCoder.finish()};
+    TopologicalStreams out;
+    out.connectivity = connectivityCoder.finish();
+    out.geometry = geometryCoder.finish();
+    return out;
 }
 
 TopologicalMesh decodeTopological(const uint8_t* connectivityBytes, size_t connectivitySize, const uint8_t* geometryBytes,
@@ -489,30 +553,24 @@ TopologicalMesh decodeTopological(const uint8_t* connectivityBytes, size_t conne
     const size_t total = vertexCount + copyCount;
     // Each vertex codes at least three binary decisions, none cheaper than
     // log2(4096 / 4095) bits (bit_model.h): a byte holds fewer than 8,192.
-    if (total == 0 || total / 8192 > geometrySize + 64 || copyCount > 8 * uint64_t(connectivitySize) + 64)
+    if (total == 0 || total / 8192 > geometrySize + 64)
         throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(total) + " vertices claimed by a topological section of " +
                     std::to_string(geometrySize) + " bytes");
     WalkState st(total, faceCount, bits);
+    st.copies = copyCount > 0;
+    if (st.copies) st.originalOf.assign(total, kNoVertex);
     RangeDecoder connectivityCoder(connectivityBytes, connectivitySize);
     RangeDecoder geometryCoder(geometryBytes, geometrySize);
     Reader connectivity{connectivityCoder}, geometry{geometryCoder};
     walk(connectivity, geometry, st, nullptr, nullptr);
-    std::vector<uint32_t> copies(copyCount);
-    codeCopies(connectivity, copies, total);
     if (connectivityCoder.bytesPastEnd() > 0 || geometryCoder.bytesPastEnd() > 0)
         throw Error(ErrorKind::Corrupt, "corrupt file: a topological section ends before its last symbol");
-    const uint32_t kUnset = kNoVertex;
-    std::vector<uint32_t> decodedOf(total, kUnset);
-    for (size_t k = 0; k < copyCount; ++k) {
-        if (copies[k] >= total || decodedOf[copies[k]] != kUnset)
-            throw Error(ErrorKind::Corrupt, "corrupt file: the topological section lists vertex copy " + std::to_string(copies[k]) +
-                        " twice or out of range");
-        decodedOf[copies[k]] = uint32_t(vertexCount + k);
-    }
-    uint32_t next = 0;
-    for (uint32_t& d : decodedOf)
-        if (d == kUnset) d = next++;
+    if (st.copiesMet != copyCount)
+        throw Error(ErrorKind::Corrupt, "corrupt file: the topological section meets " + std::to_string(st.copiesMet) +
+                    " vertex copies, the header says " + std::to_string(copyCount));
+    std::vector<uint32_t> decodedOf;
     TopologicalMesh out;
+    numberDecoded(st, decodedOf, out.copyOf);
     out.grid.resize(3 * total);
     for (size_t w = 0; w < total; ++w)
         for (int k = 0; k < 3; ++k) out.grid[3 * size_t(decodedOf[w]) + size_t(k)] = st.grid[3 * w + size_t(k)];

@@ -42,7 +42,7 @@
 namespace drm {
 
 struct TopologicalStreams {
-    std::vector<uint8_t> connectivity;  // symbols, the ranks of other vertices, the copies' places
+    std::vector<uint8_t> connectivity;  // symbols, the ranks of other vertices, which vertices are copies
     std::vector<uint8_t> geometry;      // positions, in the order the walk meets them
     bool complete = true;               // false: given up (TopologicalBudget), both empty
 };
@@ -70,9 +70,11 @@ struct TopologicalStats {
 // The decoded numbering, as the encoder sees it. Decoded vertices are the
 // originals in the order the walk met them (vertices in no face last),
 // then the copies, in the order of the vertices they copy (so that a
-// repairs section lists their originals in non-decreasing order).
+// repairs section lists their originals in non-decreasing order). Of a
+// vertex and its copies, the one the walk meets first is the original.
 struct TopologicalLayout {
     std::vector<uint32_t> vertexOf;   // decoded vertex -> the caller's
+    std::vector<uint32_t> copyOf;     // per copy (decoded V + k): its original's decoded index
     std::vector<uint32_t> faceOf;     // decoded face -> the caller's
     std::vector<uint32_t> triangles;  // as decoded, over decoded vertices
     uint64_t components = 0;
@@ -93,6 +95,7 @@ TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits,
 struct TopologicalMesh {
     std::vector<int32_t> grid;        // x, y, z per decoded vertex, copies included
     std::vector<uint32_t> triangles;  // over decoded vertices, as the walk rebuilt them
+    std::vector<uint32_t> copyOf;     // per copy: its original's decoded index (the repairs section's list)
     uint64_t components = 0;
     uint64_t boundaryEdges = 0;
 };

@@ -67,13 +67,16 @@ void expectRoundTrip(const std::string& name, const Mesh& mesh) {
     ASSERT_EQ(out.grid.size(), in.grid.size());
     EXPECT_EQ(out.triangles, layout.triangles);
     EXPECT_EQ(out.components, layout.components);
-    // Originals first, then the copies, in the order of their originals.
-    for (size_t id = 0; id < order.size(); ++id) EXPECT_EQ(order[id] >= in.originals, id >= in.originals) << "vertex " << id;
-    std::vector<uint32_t> decodedOf(order.size());
-    for (size_t id = 0; id < order.size(); ++id) decodedOf[order[id]] = uint32_t(id);
-    for (size_t k = 1; k < in.copyOf.size(); ++k)
-        EXPECT_LE(decodedOf[in.copyOf[order[in.originals + k - 1] - in.originals]],
-                  decodedOf[in.copyOf[order[in.originals + k] - in.originals]]);
+    EXPECT_EQ(out.copyOf, layout.copyOf);
+    // Originals first, then the copies, in the order of their originals;
+    // each copy stands for the same input vertex as its original.
+    ASSERT_EQ(layout.copyOf.size(), in.copyOf.size());
+    auto inputOf = [&](uint32_t cutVertex) { return cutVertex < in.originals ? cutVertex : in.copyOf[cutVertex - in.originals]; };
+    for (size_t k = 0; k < layout.copyOf.size(); ++k) {
+        ASSERT_LT(layout.copyOf[k], in.originals);
+        if (k > 0) EXPECT_LE(layout.copyOf[k - 1], layout.copyOf[k]);
+        EXPECT_EQ(inputOf(order[in.originals + k]), inputOf(order[layout.copyOf[k]])) << "copy " << k;
+    }
     // Each decoded face is the input face the layout says, same orientation.
     ASSERT_EQ(layout.faceOf.size(), in.triangles.size() / 3);
     for (size_t f = 0; f < layout.faceOf.size(); ++f) {
