@@ -53,7 +53,7 @@ py::dict statsDict(const drm::Stats& s, bool decoded) {
     d["predictor"] = drm::predictorName(s.predictor);
     d["curvature"] = s.curvature;
     d["connectivity"] = drm::connectivityCoderName(s.connectivity);
-    d["geometry"] = drm::geometryCoderName(s.geometry);
+    d["geometry"] = s.connectivity == drm::ConnectivityCoder::Topological ? "walk" : drm::geometryCoderName(s.geometry);
     d["refine_bits"] = s.refineBits;
     d["vertex_numbering"] = s.mortonNumbering ? "morton" : "geometry";
     py::dict levers;

@@ -28,7 +28,8 @@ const char* const kBenchHelp =
     "directory, in name order) and prints one row per mesh: vertices,\n"
     "triangles, components, boundary edges, connectivity bits per vertex, the\n"
     "paper's DR result where the mesh is one of its models (Table 4), the\n"
-    "shares of rank-1 and rank-2 codes among all codes (Table 3), geometry and\n"
+    "shares of rank-1 and rank-2 codes among all codes (Table 3), the\n"
+    "connectivity coder (ranks or topological) and the geometry coder, geometry and\n"
     "total bits per vertex, encode and decode seconds (codec calls only, not\n"
     "file reading), the process's peak resident memory during encoding and\n"
     "during decoding in MiB (Linux; includes the input mesh the bench holds and\n"
@@ -40,7 +41,8 @@ const char* const kBenchHelp =
     "options:\n"
     "  --csv F        also write the table as CSV to F\n"
     "  --markdown F   also write the table as Markdown to F\n"
-    "  --bits, --predictor, --curvature, --geometry, --refine-bits, --keep-vertex-order\n"
+    "  --bits, --predictor, --curvature, --geometry, --refine-bits, --keep-vertex-order,\n"
+    "  --connectivity\n"
     "                 as for 'drm encode'\n";
 
 namespace {
@@ -161,6 +163,7 @@ const std::vector<Column>& columns() {
         {"rank 1", "rank1_share", true},
         {"rank 2", "rank2_share", true},
         {"geom bpv", "geometry_bpv", true},
+        {"connectivity", "connectivity_coder", false},
         {"geometry", "geometry_coder", false},
         {"k", "refine_bits", true},
         {"total bpv", "total_bpv", true},
@@ -193,7 +196,8 @@ std::vector<std::string> cellsOf(const BenchRow& row) {
             rate(row.rank1Share, 3),
             rate(row.rank2Share, 3),
             rate(s.geometryBitsPerVertex(), 3),
-            row.measured ? std::string(drm::geometryCoderName(s.geometry)) : none,
+            row.measured ? std::string(drm::connectivityCoderName(s.connectivity)) : none,
+            !row.measured ? none : s.connectivity == drm::ConnectivityCoder::Topological ? "walk" : std::string(drm::geometryCoderName(s.geometry)),
             count(uint64_t(s.refineBits)),
             rate(s.totalBitsPerVertex(), 3),
             rate(row.encodeSeconds, 3),

@@ -23,7 +23,8 @@ const char* const kInfoHelp =
     "           vertices and the histogram of rank codes (rank 0 = boundary\n"
     "           edge); without it those JSON values are null\n"
     "  --json   one JSON object with the keys vertices, faces, components,\n"
-    "           boundary_edges, bits, predictor, curvature, connectivity, geometry,\n"
+    "           boundary_edges, bits, predictor, curvature, connectivity (ranks or\n"
+    "           topological), geometry (walk for a topological file),\n"
     "           refine_bits (low bits of the refine coder, 0 otherwise), levers,\n"
     "           header_bytes, connectivity_bytes, geometry_bytes,\n"
     "           vertex_order_bytes, attribute_bytes, welded_vertices,\n"
@@ -91,8 +92,10 @@ void printJson(const std::string& path, const drm::Stats& s, bool ranks) {
     field("predictor", jsonString(drm::predictorName(s.predictor)));
     field("curvature", boolean(s.curvature));
     field("connectivity", jsonString(drm::connectivityCoderName(s.connectivity)));
-    field("geometry", jsonString(drm::geometryCoderName(s.geometry)));
-    field("vertex_numbering", jsonString(s.mortonNumbering ? "morton" : "geometry"));
+    // A topological file's positions are in its walk's order, no vertex coder's.
+    const bool walk = s.connectivity == drm::ConnectivityCoder::Topological;
+    field("geometry", jsonString(walk ? "walk" : drm::geometryCoderName(s.geometry)));
+    field("vertex_numbering", jsonString(walk ? "walk" : s.mortonNumbering ? "morton" : "geometry"));
     field("connectivity_parts", std::to_string(s.connectivityParts));
     field("refine_bits", std::to_string(s.refineBits));
     field("levers", "{\"topological_filter\": " + boolean(s.levers.topologicalFilter) +
@@ -140,17 +143,22 @@ void printText(const std::string& path, const drm::Stats& s, bool ranks) {
     row("components", std::to_string(s.components));
     if (ranks) row("boundary edges", std::to_string(s.boundaryEdges));
     row("bits per axis", std::to_string(s.bits));
-    row("predictor", drm::predictorName(s.predictor));
-    row("curvature", s.curvature ? "on" : "off");
-    row("connectivity coder", s.connectivity == drm::ConnectivityCoder::Topological
-                                  ? "topological (positions in the order met; no distance ranks)"
-                                  : "distance ranks");
-    row("geometry coder", s.refineBits > 0 ? std::string(drm::geometryCoderName(s.geometry)) + " (" +
+    // The predictor, curvature and levers are the distance ranks' alone.
+    const bool walk = s.connectivity == drm::ConnectivityCoder::Topological;
+    if (!walk) {
+        row("predictor", drm::predictorName(s.predictor));
+        row("curvature", s.curvature ? "on" : "off");
+    }
+    row("connectivity coder", walk ? "topological (positions in the order met; no distance ranks)" : "distance ranks");
+    if (walk) row("geometry coder", "positions in the walk's order (topological)");
+    else row("geometry coder", s.refineBits > 0 ? std::string(drm::geometryCoderName(s.geometry)) + " (" +
                                                   std::to_string(s.refineBits) + " low bits)"
                                             : std::string(drm::geometryCoderName(s.geometry)));
-    row("vertex numbering", s.mortonNumbering ? "Morton order" : "the geometry coder's order");
+    row("vertex numbering", s.connectivity == drm::ConnectivityCoder::Topological ? "the order the walk meets them"
+                            : s.mortonNumbering                                     ? "Morton order"
+                                                                                    : "the geometry coder's order");
     if (s.connectivityParts > 1) row("connectivity parts", std::to_string(s.connectivityParts) + " (decoded side by side)");
-    row("levers", leverList(s.levers));
+    if (!walk) row("levers", leverList(s.levers));
     row("header bytes", std::to_string(s.headerBytes));
     row("connectivity bytes", bytesAndRate(s.connectivityBytes, s.connectivityBitsPerVertex()));
     row("geometry bytes", bytesAndRate(s.geometryBytes, s.geometryBitsPerVertex()));
@@ -163,6 +171,10 @@ void printText(const std::string& path, const drm::Stats& s, bool ranks) {
     }
     if (ranks && s.weldedVertices > 0) row("welded vertices", std::to_string(s.weldedVertices));
     row("total bytes", bytesAndRate(s.totalBytes, s.totalBitsPerVertex()));
+    if (walk) {
+        std::printf("rank codes           none (a topological file)\n");
+        return;
+    }
     if (!ranks) {
         std::printf("rank codes           (drm info --ranks decodes the file to count them)\n");
         return;

@@ -263,7 +263,8 @@ def main():
       f"({subprocess.run([args.drm, '--version'], capture_output=True, text=True).stdout.strip()}) on the "
       f"{len(meshes)} meshes of `../shared/meshes`, 12 bits per axis, on this project's 2-core machine. "
       "Connectivity bits per vertex count the rank stream alone, as the paper does (its ~30-byte header "
-      "is left out); totals are whole files. Times are codec calls only, one run each: the machine is "
+      "is left out), or in a file of format 13's topological coder (`connectivity_coder` topological in "
+      "the data) its symbols; totals are whole files. Times are codec calls only, one run each: the machine is "
       "noisy, so compare ratios within a table, not across runs.")
     w("")
     w("Reproduce: `bash scripts/build.sh && python3 tools/bench/make_results.py`. "

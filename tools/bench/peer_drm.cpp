@@ -11,16 +11,20 @@ public:
         options_.bits = bits;
         // Everything else stays at the library's defaults: these are the
         // numbers a user of `drm encode` gets.
-        if (paperMethod_) options_.levers = drm::Levers::none();
+        if (paperMethod_) {
+            options_.levers = drm::Levers::none();
+            options_.connectivity = drm::ConnectivityCoder::Ranks;
+        }
     }
 
     std::string name() const override { return paperMethod_ ? "drm paper" : "drm"; }
 
     std::string description() const override {
         return std::string("drm ") + drm::version() +
-               (paperMethod_ ? ", default options but --levers none (the paper's method as published)"
-                             : ", default options (all levers, spanning-tree geometry)") +
-               "; connectivity = the rank stream (Stats::connectivityBytes)";
+               (paperMethod_ ? ", default options but --levers none --connectivity ranks (the paper's method as published)"
+                             : ", default options (all levers, spanning-tree geometry; the distance ranks or, where the file is "
+                               "smaller, format 13's topological coder)") +
+               "; connectivity = the connectivity section (Stats::connectivityBytes)";
     }
 
     void load(const drm::Mesh& mesh) override { mesh_ = mesh; }
