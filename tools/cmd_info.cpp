@@ -24,7 +24,8 @@ const char* const kInfoHelp =
     "           edge); without it those JSON values are null\n"
     "  --json   one JSON object with the keys vertices, faces, components,\n"
     "           boundary_edges, bits, predictor, curvature, connectivity (ranks or\n"
-    "           topological), geometry (walk for a topological file),\n"
+    "           topological), geometry (walk for a topological file, whose\n"
+    "           predictor, curvature and levers are null),\n"
     "           refine_bits (low bits of the refine coder, 0 otherwise), levers,\n"
     "           header_bytes, connectivity_bytes, geometry_bytes,\n"
     "           vertex_order_bytes, attribute_bytes, welded_vertices,\n"
@@ -89,16 +90,17 @@ void printJson(const std::string& path, const drm::Stats& s, bool ranks) {
     field("components", number(s.components));
     field("boundary_edges", ranks ? number(s.boundaryEdges) : "null");
     field("bits", std::to_string(s.bits));
-    field("predictor", jsonString(drm::predictorName(s.predictor)));
-    field("curvature", boolean(s.curvature));
-    field("connectivity", jsonString(drm::connectivityCoderName(s.connectivity)));
-    // A topological file's positions are in its walk's order, no vertex coder's.
+    // A topological file's positions are in its walk's order, no vertex
+    // coder's; the predictor, curvature and levers are the ranks' alone.
     const bool walk = s.connectivity == drm::ConnectivityCoder::Topological;
+    field("predictor", walk ? "null" : jsonString(drm::predictorName(s.predictor)));
+    field("curvature", walk ? "null" : boolean(s.curvature));
+    field("connectivity", jsonString(drm::connectivityCoderName(s.connectivity)));
     field("geometry", jsonString(walk ? "walk" : drm::geometryCoderName(s.geometry)));
     field("vertex_numbering", jsonString(walk ? "walk" : s.mortonNumbering ? "morton" : "geometry"));
     field("connectivity_parts", std::to_string(s.connectivityParts));
     field("refine_bits", std::to_string(s.refineBits));
-    field("levers", "{\"topological_filter\": " + boolean(s.levers.topologicalFilter) +
+    field("levers", walk ? std::string("null") : "{\"topological_filter\": " + boolean(s.levers.topologicalFilter) +
                         ", \"gap_closing\": " + boolean(s.levers.gapClosing) +
                         ", \"confidence_context\": " + boolean(s.levers.confidenceContext) +
                         ", \"angle_order\": " + boolean(s.levers.angleOrder) +
@@ -154,7 +156,7 @@ void printText(const std::string& path, const drm::Stats& s, bool ranks) {
     else row("geometry coder", s.refineBits > 0 ? std::string(drm::geometryCoderName(s.geometry)) + " (" +
                                                   std::to_string(s.refineBits) + " low bits)"
                                             : std::string(drm::geometryCoderName(s.geometry)));
-    row("vertex numbering", s.connectivity == drm::ConnectivityCoder::Topological ? "the order the walk meets them"
+    row("vertex numbering", walk ? "the order the walk meets them"
                             : s.mortonNumbering                                     ? "Morton order"
                                                                                     : "the geometry coder's order");
     if (s.connectivityParts > 1) row("connectivity parts", std::to_string(s.connectivityParts) + " (decoded side by side)");

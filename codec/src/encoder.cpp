@@ -1391,9 +1391,14 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     // Auto (with the vertex coder left to the encoder): the topological
     // coder too, the smaller file kept.
     // It gives up once its projected size passes the ranks' file by
-    // kTopologicalGiveUp: on scans, where the ranks win by 10 % or more,
-    // after a quarter of the faces.
-    if (options.connectivity == ConnectivityCoder::Auto && options.geometry == GeometryCoder::Auto) {
+    // kTopologicalGiveUp: on scans, where the ranks win by 11 to 13 %
+    // (bunny, horse, igea), after a quarter of the faces. Options that only
+    // the ranks have (a vertex coder, a predictor, levers, curvature,
+    // parts) ask for the ranks.
+    const bool ranksAskedFor = options.geometry != GeometryCoder::Auto || options.predictor != Predictor::Auto ||
+                               options.curvature || options.connectivityParts != 0 ||
+                               leversName(options.levers) != leversName(Levers());
+    if (options.connectivity == ConnectivityCoder::Auto && !ranksAskedFor) {
         const uint64_t rival = best.encoded.bytes.size();
         std::optional<Attempt> topological =
             encodeTopologically(mesh, prepared, cut, options, progress, uint64_t(double(rival) * kTopologicalGiveUp) + 64);

@@ -99,13 +99,26 @@ int sideClass(const std::vector<int32_t>& grid, uint32_t at, uint32_t toward, ui
 // The decoder's side of what the walk shares: the positions met so far, the
 // traversal, the vertices of the front (met and not culled), the models.
 struct WalkState {
+    // A decoder's counts are the header's claims: its tables start at
+    // kFirstVertices at most and grow with the vertices met (room), and
+    // room for about two faces a vertex at first (the traversal grows).
+    static constexpr size_t kFirstVertices = size_t(1) << 22;
     WalkState(size_t vertexCount, size_t faceCount, int bits)
-        : bits(bits), vertexCount(vertexCount), faceCount(faceCount), grid(3 * vertexCount, 0),
-          // A decoder's face count is the header's claim: room for about two
-          // faces a vertex at first, never more (the table grows as needed).
-          traversal(vertexCount, std::min<size_t>(faceCount, 2 * vertexCount + 16), nullptr), admissible(traversal, true),
-          slotOf(vertexCount, kNoVertex) {
+        : bits(bits), vertexCount(vertexCount), faceCount(faceCount),
+          traversal(std::min(vertexCount, kFirstVertices), std::min<size_t>(faceCount, 2 * std::min(vertexCount, kFirstVertices) + 16),
+                    nullptr),
+          admissible(traversal, true) {
         traversal.setDepthFirst();
+        room(std::min(vertexCount, kFirstVertices));
+    }
+    // Tables for walk ids below n.
+    void room(size_t n) {
+        if (n <= slotOf.size()) return;
+        const size_t size = std::min(vertexCount, std::max(n, 2 * slotOf.size()));
+        grid.resize(3 * size, 0);
+        slotOf.resize(size, kNoVertex);
+        if (copies) originalOf.resize(size, kNoVertex);
+        traversal.growVertices(size);
     }
 
     int bits;
@@ -125,6 +138,7 @@ struct WalkState {
     Models models;
 
     void enter(uint32_t v) {
+        room(size_t(v) + 1);
         slotOf[v] = uint32_t(front.size());
         front.push_back(v);
     }
@@ -152,7 +166,7 @@ void codePosition(Io& io, AxisModels* models, int firstContext, const int64_t pr
                                        Io::kEncoding ? int32_t(actual[k] - p) : 0);
         const int64_t value = p + r;
         if (!Io::kEncoding && (value < 0 || value > top))
-            throw Error(ErrorKind::Corrupt, "corrupt file: a position lies outside the grid");
+            throw Error(ErrorKind::Corrupt, "corrupt file: vertex " + std::to_string(v) + " lies outside the grid");
         st.grid[3 * size_t(v) + size_t(k)] = int32_t(value);
         context = std::min(std::max(context, lengthOf(r)), kMagnitudeContexts - 1);
     }
@@ -180,7 +194,7 @@ void codePositionInFrame(Io& io, AxisModels* models, int firstContext, const int
     for (int k = 0; k < 3; ++k) {
         const int64_t value = p[k] + r[k];
         if (!Io::kEncoding && (value < 0 || value > top))
-            throw Error(ErrorKind::Corrupt, "corrupt file: a position lies outside the grid");
+            throw Error(ErrorKind::Corrupt, "corrupt file: vertex " + std::to_string(v) + " lies outside the grid");
         st.grid[3 * size_t(v) + size_t(k)] = int32_t(value);
     }
 }
@@ -293,6 +307,14 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
     };
     uint32_t nextInput = 0;  // encoder: no input vertex below it is left unmet
     const int32_t* none = nullptr;
+    // A decoder reading invented zero bytes past its streams stops at the
+    // next vertex, before it makes room for a header's claim.
+    auto checkNotPastEnd = [&] {
+        if constexpr (!Io::kEncoding)
+            if (connectivity.coder.bytesPastEnd() > 0 || geometry.coder.bytesPastEnd() > 0)
+                throw Error(ErrorKind::Corrupt, "corrupt file: a topological section ends at vertex " + std::to_string(st.met) + " of " +
+                            std::to_string(st.vertexCount));
+    };
     // After vertex v's position: in a mesh with copies, a vertex met at the
     // grid point of an original met before says whether it copies one (and
     // which, if several are there); the first of its group is an original.
@@ -312,7 +334,9 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
             }
             if (connectivity.bit(st.models.isCopy, copy)) {
                 if (there.size() > 1) index = connectivity.plain(index, bitLength(uint64_t(there.size() - 1)));
-                if (index >= there.size()) throw Error(ErrorKind::Corrupt, "corrupt file: a vertex copies an original that is not there");
+                if (index >= there.size())
+                    throw Error(Io::kEncoding ? ErrorKind::Internal : ErrorKind::Corrupt,
+                                "corrupt file: vertex " + std::to_string(v) + " copies an original that is not at its grid point");
                 original = there[index];
             } else {
                 original = kNoVertex;
@@ -329,7 +353,11 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
     while (st.traversal.triangleCount() < st.faceCount) {
         // A new component: its first face's three vertices are the next
         // three ids (the manifold cut leaves no vertex in two components).
-        if (st.met + 3 > st.vertexCount) throw Error(ErrorKind::Corrupt, "corrupt file: more faces than vertices allow");
+        if (size_t(st.met) + 3 > st.vertexCount)
+            throw Error(ErrorKind::Corrupt, "corrupt file: component " + std::to_string(st.components + 1) + " starts past the " +
+                        std::to_string(st.vertexCount) + " vertices");
+        checkNotPastEnd();
+        st.room(size_t(st.met) + 3);
         const int32_t* at[3] = {none, none, none};
         if constexpr (Io::kEncoding) {
             while (nextFace < st.faceCount && truth->idOf[truth->triangles[3 * nextFace]] != kNoVertex) ++nextFace;
@@ -397,20 +425,26 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
                 ++st.boundaryEdges;
             } else {
                 if (symbol == kNewVertex) {
-                    if (st.met >= st.vertexCount) throw Error(ErrorKind::Corrupt, "corrupt file: more vertices than the mesh has");
+                    if (st.met >= st.vertexCount)
+                        throw Error(ErrorKind::Corrupt, "corrupt file: face " + std::to_string(st.traversal.triangleCount()) +
+                                    " meets a vertex past the " + std::to_string(st.vertexCount));
                     const int32_t* actual = none;
                     if constexpr (Io::kEncoding) {
                         meet(input, st.met);
                         actual = truth->grid.data() + 3 * size_t(input);
                     }
+                    checkNotPastEnd();
                     apex = st.met++;
+                    st.room(size_t(apex) + 1);
                     codeNewVertex(geometry, st, edge, predicted, actual, apex);
                     if (stats) stats->newVertexBits += spent(geometry, geometryMark);
                     noteMet(apex);
                     st.enter(apex);
                 } else if (symbol == kEndAtI || symbol == kEndAtJ) {
                     apex = symbol == kEndAtI ? ends.atI : ends.atJ;
-                    if (apex == kNoVertex) throw Error(ErrorKind::Corrupt, "corrupt file: a fan end named where there is none");
+                    if (apex == kNoVertex)
+                        throw Error(ErrorKind::Corrupt, "corrupt file: face " + std::to_string(st.traversal.triangleCount()) +
+                                    " closes a fan that has no open end");
                 } else {
                     rankedOthers(st, edge, ends, predicted, others);
                     uint32_t rank = 0;
@@ -425,13 +459,20 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
                     rank = uint32_t(codeResidual(connectivity, st.models.otherRank, 0,
                                                  [&](int) -> BitModel& { return st.models.noSign; }, int32_t(rank)));
                     if (stats) stats->rankBits += spent(connectivity, connectivityMark);
-                    if (rank >= others.size()) throw Error(ErrorKind::Corrupt, "corrupt file: a vertex rank past the front");
+                    if (rank >= others.size())
+                        throw Error(Io::kEncoding ? ErrorKind::Internal : ErrorKind::Corrupt,
+                                    "corrupt file: face " + std::to_string(st.traversal.triangleCount()) + " names front vertex " +
+                                        std::to_string(rank) + " of " + std::to_string(others.size()));
                     std::nth_element(others.begin(), others.begin() + rank, others.end());
+                    if (Io::kEncoding && others[rank].second != apex)
+                        throw Error(ErrorKind::Internal, "internal error: the apex is not among the front's vertices");
                     apex = others[rank].second;
                 }
                 if (!st.admissible(apex, edge))
                     throw Error(Io::kEncoding ? ErrorKind::Internal : ErrorKind::Corrupt,
-                                Io::kEncoding ? "internal error: an apex the walk cannot take" : "corrupt file: an impossible triangle");
+                                (Io::kEncoding ? "internal error: face " : "corrupt file: face ") +
+                                    std::to_string(st.traversal.triangleCount()) + " would reuse an edge or a closed vertex " +
+                                    std::to_string(apex));
                 st.traversal.attachApex(edge, apex);
                 if constexpr (Io::kEncoding) {
                     truth->faceOf.push_back(face);
@@ -448,11 +489,13 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
             st.leaveIfCulled(edge.vj);
             if (apex != kNoVertex) st.leaveIfCulled(apex);
             if (st.traversal.triangleCount() > st.faceCount)
-                throw Error(ErrorKind::Corrupt, "corrupt file: more faces than the mesh has");
+                throw Error(ErrorKind::Corrupt, "corrupt file: more faces than the header's " + std::to_string(st.faceCount));
         }
     }
     // Vertices in no face, each from the one before.
     for (uint32_t v = st.met; v < st.vertexCount; ++v) {
+        checkNotPastEnd();
+        st.room(size_t(v) + 1);
         const int32_t* actual = none;
         if constexpr (Io::kEncoding) {
             while (truth->idOf[nextInput] != kNoVertex) ++nextInput;
@@ -515,7 +558,7 @@ TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits,
     truth.groupOriginal.assign(firstCopy, kNoVertex);
     WalkState st(vertexCount, faceCount, bits);
     st.copies = !copyOf.empty();
-    if (st.copies) st.originalOf.assign(vertexCount, kNoVertex);
+    if (st.copies) st.originalOf.assign(st.slotOf.size(), kNoVertex);
     RangeEncoder connectivityCoder, geometryCoder;
     Writer connectivity{connectivityCoder}, geometry{geometryCoder};
     if (stats) *stats = TopologicalStats();
@@ -558,7 +601,7 @@ TopologicalMesh decodeTopological(const uint8_t* connectivityBytes, size_t conne
                     std::to_string(geometrySize) + " bytes");
     WalkState st(total, faceCount, bits);
     st.copies = copyCount > 0;
-    if (st.copies) st.originalOf.assign(total, kNoVertex);
+    if (st.copies) st.originalOf.assign(st.slotOf.size(), kNoVertex);
     RangeDecoder connectivityCoder(connectivityBytes, connectivitySize);
     RangeDecoder geometryCoder(geometryBytes, geometrySize);
     Reader connectivity{connectivityCoder}, geometry{geometryCoder};

@@ -84,7 +84,8 @@ void Traversal::attachApex(const OpenEdge& edge, uint32_t apex) {
     addHalfEdge(apex, edge.vj, edge.vi);
     triangles_.insert(triangles_.end(), {edge.vj, edge.vi, apex});
     // Left edge to the front keeps the traversal circling the current vertex
-    // (paper, Section 3: 5.6% better than breadth first); right edge to the back.
+    // (paper, Section 3: 5.6% better than breadth first); right edge to the
+    // back, or depth first just under the left one (setDepthFirst).
     if (depthFirst_) {
         // The right edge waits just under the left one (topological_coder.h).
         queue_.push_front(packEdge(apex, edge.vj));

@@ -42,6 +42,14 @@ public:
     // fan). Before the first component.
     void keepVertex(uint32_t v);
 
+    // Makes room for vertices up to n - 1 (a decoder that meets its vertices
+    // as it goes, topological_coder.h: a header's count is only a claim).
+    void growVertices(size_t n) {
+        if (n <= openEdges_.size()) return;
+        openEdges_.resize(n, 0);
+        state_.resize(n, kUntouched);
+        if (!kept_.empty()) kept_.resize(n, 0);
+    }
     // Right edges to the front too, just behind the left edge: the walk
     // then closes the region it is in before it turns back, as Edgebreaker
     // does, and the front stays one loop far more often (the topological

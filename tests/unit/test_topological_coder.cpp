@@ -100,6 +100,17 @@ TEST(TopologicalCoder, SmallMeshesComeBackRenumberedInTheOrderMet) {
     expectRoundTrip("needing repairs", drm_test::meshNeedingRepairs());
 }
 
+// A cut mesh's copies are named where the walk meets a vertex at the grid
+// point of an original: one of a fin's, and, with the same mesh again on
+// the same points, one of two originals there (the index bits).
+TEST(TopologicalCoder, CopiesComeBackAsTheRepairsSectionListsThem) {
+    const Mesh repaired = drm_test::meshNeedingRepairs();
+    ASSERT_FALSE(prepare(repaired).copyOf.empty());
+    expectRoundTrip("one fin", repaired);
+    const Mesh twice = drm_test::append(repaired, repaired, 0, 0, 0);
+    expectRoundTrip("two fins on the same points", twice);
+}
+
 TEST(TopologicalCoder, TestMeshesComeBackRenumberedInTheOrderMet) {
     const std::vector<drm_test::NamedMesh> meshes = drm_test::readPlyDirectory(DRM_TEST_DATA_DIR);
     ASSERT_GE(meshes.size(), 10u);
@@ -129,21 +140,36 @@ TEST(TopologicalCoder, BrokenStreamsAreRefused) {
     cut = streams;
     cut.geometry.resize(cut.geometry.size() / 2);
     EXPECT_THROW(decodeStreams(cut, in, faces), Error);
-    // Every byte of the connectivity flipped in turn: decoding either throws
-    // Error or gives some mesh, never crashes or hangs.
-    for (size_t at = 0; at < streams.connectivity.size(); at += 7) {
-        TopologicalStreams damaged = streams;
-        damaged.connectivity[at] ^= 0x5A;
+    // Bytes of either stream flipped in turn: decoding either throws a
+    // Corrupt Error or gives some mesh, never crashes or hangs; most are
+    // refused.
+    size_t refused = 0, tried = 0;
+    for (int stream = 0; stream < 2; ++stream)
+        for (size_t at = 0; at < (stream == 0 ? streams.connectivity.size() : streams.geometry.size()); at += 7) {
+            TopologicalStreams damaged = streams;
+            (stream == 0 ? damaged.connectivity : damaged.geometry)[at] ^= 0x5A;
+            ++tried;
+            try {
+                decodeStreams(damaged, in, faces);
+            } catch (const Error& e) {
+                EXPECT_EQ(e.kind(), ErrorKind::Corrupt) << e.what();
+                ++refused;
+            }
+        }
+    EXPECT_GT(2 * refused, tried);
+    EXPECT_THROW(decodeStreams(streams, in, faces + 5), Error);
+    // A header claiming far more vertices than the bytes can hold, and one
+    // just within the bound: refused, the second once the streams run out
+    // (its tables grow with the vertices met, not with the claim).
+    for (size_t claim : {size_t(1) << 31, 8192 * (streams.geometry.size() + 64)}) {
         try {
-            decodeStreams(damaged, in, faces);
-        } catch (const Error&) {
+            decodeTopological(streams.connectivity.data(), streams.connectivity.size(), streams.geometry.data(),
+                              streams.geometry.size(), claim, 0, faces, 12);
+            ADD_FAILURE() << "a claim of " << claim << " vertices was decoded";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::Corrupt) << e.what();
         }
     }
-    EXPECT_THROW(decodeStreams(streams, in, faces + 5), Error);
-    // A header claiming far more vertices than the bytes can hold.
-    EXPECT_THROW(decodeTopological(streams.connectivity.data(), streams.connectivity.size(), streams.geometry.data(),
-                                   streams.geometry.size(), size_t(1) << 31, 0, faces, 12),
-                 Error);
 }
 
 }  // namespace

@@ -188,8 +188,8 @@ enum class GeometryCoder : uint8_t {
 // How the connectivity is coded (the connectivity section).
 enum class ConnectivityCoder : uint8_t {
     Auto = 0,         // an option only, never stored: the distance ranks, and the
-                      // topological coder too where a mesh's ranks cost many bits;
-                      // the smaller file wins
+                      // topological coder too unless an option only the ranks have
+                      // is set (EncodeOptions::connectivity); the smaller file wins
     Ranks = 1,        // the paper's distance ranks over the vertex set coded first
     Topological = 2,  // format 13: each triangle's apex named by topology (a new
                       // vertex, a fan's far end, or another front vertex by rank),
@@ -347,8 +347,12 @@ struct EncodeOptions {
     int connectivityParts = 0;
     // Ranks codes the paper's distance ranks (every face gets a rank code:
     // Encoded::faceRank); Topological the connectivity by topology and the
-    // positions in the order it meets them (docs/format.md, "Format 13");
-    // Auto tries both where the ranks are costly and keeps the smaller file.
+    // positions in the order it meets them (docs/format.md, "Coder 2:
+    // topological"); Auto codes the ranks, then the topological coder,
+    // which gives up once it would be 5 % larger, and keeps the smaller
+    // file. Auto keeps to the ranks when an option only they have is set
+    // (geometry, predictor, curvature, levers other than all, parts);
+    // Topological refuses a geometry coder other than Auto.
     ConnectivityCoder connectivity = ConnectivityCoder::Auto;
     Progress progress;                      // may be empty
 };
