@@ -48,6 +48,7 @@ encode blobby-boundary blobby-3cc.ply --levers boundary --connectivity ranks  # 
 encode bunny-lres-parts bunny-lres.ply --parts 2 --connectivity ranks  # a scan in two connectivity parts (format 11): the seam, its classes, kept vertices
 encode tray-bottom-topological tray-bottom.ply           # CAD STL slivers, left to the encoder: the topological coder (format 13)
 encode blobby-3cc-topological blobby-3cc.ply --connectivity topological --keep-vertex-order  # 3 components with holes, topological, vertex order kept
+encode fins-topological fins-and-bowtie.ply --connectivity topological  # a cut mesh: copies named at their originals' grid points, two originals on one point
 if [ $check = 1 ]; then
   if [ ${#differ[@]} -gt 0 ]; then
     printf 'the encoder now writes %s differently from tests/golden\n' "${differ[@]}" >&2

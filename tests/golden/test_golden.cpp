@@ -55,6 +55,9 @@ TEST(Golden, TwoPartsOnBunnyLres) { expectDecodesToGolden("bunny-lres-parts"); }
 TEST(Golden, TopologicalOnTrayBottom) { expectDecodesToGolden("tray-bottom-topological"); }
 // The topological coder over three components with holes, vertex order kept.
 TEST(Golden, TopologicalOnBlobbyWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc-topological"); }
+// A cut mesh (a fin, two fans at a vertex, the same again on the same
+// points): copies named where the walk meets an original's grid point.
+TEST(Golden, TopologicalCopiesOnFinsAndBowtie) { expectDecodesToGolden("fins-topological"); }
 
 // Format 12's files, as 19bca29 wrote them (format 12's last encoder,
 // 0b5407b, wrote them byte for byte the same): the distance ranks alone.
