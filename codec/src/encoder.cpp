@@ -451,6 +451,24 @@ bool splitFaces(const NumberedMesh& numbered, bool whateverItCosts, SplitFaces& 
 
 // The attempt's quantized and vertexOrder are left empty: only the attempt
 // kept gets them, by move (encodeWithGeometry, encodeConnectivity).
+// The repairs as the section stores them and undoCut replays them: an
+// attempt's copies and faces repeating a vertex (in its decoded indices),
+// the cut's flips and repeated faces in decoded face order (faceOrder:
+// decoded face -> face of prepared.triangles).
+Repairs repairsInDecodedOrder(const PreparedMesh& prepared, std::vector<uint32_t> copyOf, std::vector<uint32_t> looseTriangles,
+                              const std::vector<uint32_t>& faceOrder) {
+    Repairs out = prepared.repairs;
+    out.copyOf = std::move(copyOf);
+    out.looseTriangles = std::move(looseTriangles);
+    std::vector<uint32_t> positionOf(faceOrder.size());
+    for (size_t i = 0; i < faceOrder.size(); ++i) {
+        out.flipped[i] = prepared.repairs.flipped[faceOrder[i]];
+        positionOf[faceOrder[i]] = uint32_t(i);
+    }
+    for (uint32_t& face : out.duplicateOf) face = positionOf[face];
+    return out;
+}
+
 Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, const EncodeOptions& options,
                    ProgressReporter& progress, const ComponentStarts& starts = ComponentStarts()) {
     Attempt attempt;
@@ -533,21 +551,11 @@ Attempt encodeOnce(const PreparedMesh& prepared, const NumberedMesh& numbered, c
     progress.stage("writing", 0.95);
     const std::vector<uint8_t> vertexOrder =
         options.keepVertexOrder ? encodeVertexOrder(numbered.order) : std::vector<uint8_t>();
-    // The repairs as the section stores them and undoCut replays them: the
-    // attempt's copies and faces repeating a vertex, the cut's flips and
-    // repeated faces in decoded face order. None for a mesh that needed none.
+    // None for a mesh that needed none.
     Repairs inDecodedOrder;
     std::vector<uint8_t> repairs;
     if (prepared.repaired) {
-        inDecodedOrder = prepared.repairs;
-        inDecodedOrder.copyOf = numbered.copyOf;
-        inDecodedOrder.looseTriangles = numbered.looseTriangles;
-        std::vector<uint32_t> positionOf(faceCount);
-        for (size_t i = 0; i < faceCount; ++i) {
-            inDecodedOrder.flipped[i] = prepared.repairs.flipped[decodedFaceOrder[i]];
-            positionOf[decodedFaceOrder[i]] = uint32_t(i);
-        }
-        for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
+        inDecodedOrder = repairsInDecodedOrder(prepared, numbered.copyOf, numbered.looseTriangles, decodedFaceOrder);
         repairs = encodeRepairs(inDecodedOrder, header.vertexCount);
     }
     std::vector<uint8_t> secondPass;
@@ -1226,16 +1234,9 @@ std::optional<Attempt> encodeTopologically(const Mesh& mesh, const PreparedMesh&
 
     Repairs inDecodedOrder;
     if (prepared.repaired) {
-        inDecodedOrder = prepared.repairs;
-        inDecodedOrder.copyOf = layout.copyOf;
-        inDecodedOrder.looseTriangles.resize(cut.looseTriangles.size());
-        for (size_t c = 0; c < cut.looseTriangles.size(); ++c) inDecodedOrder.looseTriangles[c] = decodedIndex[cut.looseTriangles[c]];
-        std::vector<uint32_t> positionOf(faceCount);
-        for (size_t i = 0; i < faceCount; ++i) {
-            inDecodedOrder.flipped[i] = prepared.repairs.flipped[layout.faceOf[i]];
-            positionOf[layout.faceOf[i]] = uint32_t(i);
-        }
-        for (uint32_t& face : inDecodedOrder.duplicateOf) face = positionOf[face];
+        std::vector<uint32_t> loose(cut.looseTriangles.size());
+        for (size_t c = 0; c < loose.size(); ++c) loose[c] = decodedIndex[cut.looseTriangles[c]];
+        inDecodedOrder = repairsInDecodedOrder(prepared, layout.copyOf, std::move(loose), layout.faceOf);
         attempt.repairs = encodeRepairs(inDecodedOrder, originals);
     }
     if (options.keepVertexOrder) attempt.vertexOrder = encodeVertexOrder(order);
