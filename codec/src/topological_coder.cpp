@@ -1,8 +1,8 @@
 #include "topological_coder.h"
 
 #include <algorithm>
-#include <unordered_map>
 #include <string>
+#include <unordered_map>
 
 #include "admissibility.h"
 #include "bit_model.h"
@@ -246,8 +246,9 @@ void codeNewVertex(Io& geometry, WalkState& st, const OpenEdge& edge, const int6
     }
 }
 
-// The admissible front vertices other than the edge's fan ends, nearest the
-// prediction first (squared distance, then index).
+// The admissible front vertices other than the edge's fan ends, each with
+// its squared distance to the prediction: ranked by (distance, index), of
+// which the caller needs only the one it codes (nth_element).
 void rankedOthers(WalkState& st, const OpenEdge& edge, const FanEnds& ends, const int64_t predicted[3],
                   std::vector<std::pair<int64_t, uint32_t>>& out) {
     out.clear();
