@@ -104,7 +104,7 @@ void readRepairsBeforeTraversal(Decoding& d) {
 // Format 13: the topological coder's two sections decode into the vertices
 // (copies included, each where its original is) and the traversal's faces,
 // in the numbering the ranks' decoder gives (topological_coder.h).
-void decodeTopologically(Decoding& d) {
+void decodeTopologically(Decoding& d, ProgressReporter& progress) {
     const FileHeader& header = d.header;
     d.vertexCount = size_t(header.vertexCount);
     if (header.hasRepairs) {
@@ -117,7 +117,7 @@ void decodeTopologically(Decoding& d) {
     d.traversalVertices = d.vertexCount + d.copyOf().size();
     TopologicalMesh decoded = decodeTopological(d.parts.connectivity, d.parts.connectivitySize, d.parts.geometry,
                                                 d.parts.geometrySize, d.vertexCount, d.copyOf().size(), d.traversalFaces,
-                                                header.grid.bits);
+                                                header.grid.bits, OtherSearchBound(), WalkProgress{&progress, 0.01, 0.94});
     if (decoded.components != header.componentCount)
         throw Error(ErrorKind::Corrupt, "corrupt file: the header counts " + std::to_string(header.componentCount) +
                     " components, the connectivity section " + std::to_string(decoded.components));
@@ -385,7 +385,7 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
 
     if (parts.header.connectivityCoder == ConnectivityCoder::Topological) {
         progress.stage("decoding vertices and connectivity", 0.01);
-        decodeTopologically(d);
+        decodeTopologically(d, progress);
     } else {
         progress.stage("decoding vertices", 0.01);
         decodeVertices(d);

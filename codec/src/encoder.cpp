@@ -1191,7 +1191,7 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
 // coder's projection) the attempt gives up and returns no file.
 std::optional<Attempt> encodeTopologically(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
                                            const EncodeOptions& options, ProgressReporter& progress, uint64_t giveUpAbove = 0) {
-    progress.stage("coding topologically", 0.9);
+    progress.stage("coding topologically", giveUpAbove == 0 ? 0.01 : 0.9);
     const size_t originals = mesh.vertexCount(), copies = cut.copyOf.size();
     std::vector<int32_t> grid(prepared.quantized);  // copies at their originals' grid points
     grid.reserve(3 * (originals + copies));
@@ -1203,6 +1203,9 @@ std::optional<Attempt> encodeTopologically(const Mesh& mesh, const PreparedMesh&
     // construction (the walk would throw on any that is not).
     budget.meshChecked = true;
     budget.giveUpAbove = giveUpAbove;
+    // Alone it is the whole encoding (to 0.95); after the ranks, their
+    // last stretch.
+    budget.progress = giveUpAbove == 0 ? WalkProgress{&progress, 0.01, 0.94} : WalkProgress{&progress, 0.9, 0.05};
     TopologicalStreams streams = encodeTopological(grid, prepared.grid.bits, *prepared.triangles, cut.copyOf, &layout, nullptr, budget);
     if (!streams.complete) return std::nullopt;
     // Decoded vertex -> input vertex: of an input vertex and its copies, the

@@ -64,6 +64,31 @@ public:
         return true;
     }
 
+    // Sets (a, b) -> value, inserting the edge or overwriting its value.
+    void assign(uint32_t a, uint32_t b, uint32_t value) {
+        if (full()) grow();
+        const uint64_t key = pack(a, b);
+        size_t slot = home(key);
+        for (; keys_[slot] != kEmptyKey; slot = next(slot))
+            if (keys_[slot] == key) {
+                values_[slot] = value;
+                return;
+            }
+        keys_[slot] = key;
+        values_[slot] = value;
+        ++size_;
+    }
+    // Makes (a, b) answer kAbsent. Its slot stays taken (linear probing has
+    // no other tombstone) until a rebuildKeeping that drops it.
+    void erase(uint32_t a, uint32_t b) {
+        const uint64_t key = pack(a, b);
+        for (size_t slot = home(key); keys_[slot] != kEmptyKey; slot = next(slot))
+            if (keys_[slot] == key) {
+                values_[slot] = kAbsent;
+                return;
+            }
+    }
+
     size_t size() const { return size_; }
     size_t capacity() const { return keys_.size(); }
 
@@ -72,9 +97,10 @@ public:
     // (rebuildKeeping) instead.
     bool full() const { return (size_ + 1) * slotsPerEdge_ > keys_.size(); }
 
-    // Rebuilds the table with only the entries (a, b) for which keep(a, b)
-    // holds, at a capacity that leaves them at most a quarter of the most
-    // the table holds (so it is full again only after at least 3/4 of that
+    // Rebuilds the table with only the entries (a, b) -> value for which
+    // keep(a, b, value) holds (an erased entry's value is kAbsent), at a
+    // capacity that leaves them at most a quarter of the most the table
+    // holds (so it is full again only after at least 3/4 of that
     // has been inserted: sweeping costs O(1) per insert, amortized, and
     // little, as it reads each slot once). Linear probing needs no
     // tombstones this way; the dropped keys then answer kAbsent.
@@ -95,7 +121,7 @@ public:
             const uint64_t asked = key & (uint64_t(0) - uint64_t(used));  // 0 if unused, without a branch
             keptKeys[kept] = key;
             keptValues[kept] = values_[i];
-            kept += used & bool(keep(uint32_t(asked >> 32), uint32_t(asked)));
+            kept += used & bool(keep(uint32_t(asked >> 32), uint32_t(asked), values_[i]));
         }
         keptKeys.resize(kept);
         keptValues.resize(kept);

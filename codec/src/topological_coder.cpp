@@ -1,6 +1,7 @@
 #include "topological_coder.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <unordered_map>
 
@@ -11,6 +12,7 @@
 #include "gap_closing.h"
 #include "local_frame.h"
 #include "mesh_check.h"
+#include "progress.h"
 #include "range_coder.h"
 #include "rank_coder.h"
 #include "residual_model.h"
@@ -135,19 +137,28 @@ struct WalkState {
     std::vector<uint32_t> originalOf;
     uint32_t copiesMet = 0;
     std::vector<uint32_t> front, slotOf;
+    OtherSearchBound search;
+    WalkProgress progress;
     Models models;
 
+    // The front's positions beside it (frontAt: 3 per slot), so that the
+    // pass over it reads one array in order (forEachOther).
+    std::vector<int32_t> frontAt;
     void enter(uint32_t v) {
         room(size_t(v) + 1);
         slotOf[v] = uint32_t(front.size());
         front.push_back(v);
+        frontAt.insert(frontAt.end(), grid.begin() + 3 * std::ptrdiff_t(v), grid.begin() + 3 * std::ptrdiff_t(v) + 3);
     }
     void leaveIfCulled(uint32_t v) {
         if (slotOf[v] == kNoVertex || !traversal.isCulled(v)) return;
-        const uint32_t last = front.back();
-        front[slotOf[v]] = last;
-        slotOf[last] = slotOf[v];
+        const size_t slot = slotOf[v], lastSlot = front.size() - 1;
+        const uint32_t last = front[lastSlot];
+        front[slot] = last;
+        for (size_t k = 0; k < 3; ++k) frontAt[3 * slot + k] = frontAt[3 * lastSlot + k];
+        slotOf[last] = uint32_t(slot);
         front.pop_back();
+        frontAt.resize(3 * lastSlot);
         slotOf[v] = kNoVertex;
     }
 };
@@ -246,21 +257,80 @@ void codeNewVertex(Io& geometry, WalkState& st, const OpenEdge& edge, const int6
     }
 }
 
-// The admissible front vertices other than the edge's fan ends, each with
-// its squared distance to the prediction: ranked by (distance, index), of
-// which the caller needs only the one it codes (nth_element).
-void rankedOthers(WalkState& st, const OpenEdge& edge, const FanEnds& ends, const int64_t predicted[3],
-                  std::vector<std::pair<int64_t, uint32_t>>& out) {
-    out.clear();
-    for (uint32_t v : st.front) {
-        if (v == ends.atI || v == ends.atJ || !st.admissible(v, edge)) continue;
-        int64_t d2 = 0;
-        for (int k = 0; k < 3; ++k) {
-            const int64_t d = component(st.grid, v, k) - predicted[k];
-            d2 += d * d;
-        }
-        out.emplace_back(d2, v);
+// An apex elsewhere on the front: the admissible front vertices other than
+// the edge's fan ends, ordered by (squared distance to the prediction,
+// walk id). Admissibility costs edge look-ups, so it is asked only of the
+// few vertices that come before the apex in that order.
+using Keyed = std::pair<int64_t, uint32_t>;  // (squared distance, walk id)
+
+// Calls visit(key) for each front vertex other than the fan ends whose
+// squared distance is at most *within (which visit may lower as it goes):
+// most vertices are passed over on their distance alone.
+template <class Visit>
+void forEachOther(const WalkState& st, const FanEnds& ends, const int64_t predicted[3], const int64_t* within,
+                  Visit visit) {
+    const int32_t* at = st.frontAt.data();
+    const int64_t px = predicted[0], py = predicted[1], pz = predicted[2];
+    for (size_t slot = 0; slot < st.front.size(); ++slot, at += 3) {
+        const int64_t dx = at[0] - px, dy = at[1] - py, dz = at[2] - pz;
+        const int64_t d2 = dx * dx + dy * dy + dz * dz;
+        if (d2 > *within) continue;
+        const uint32_t v = st.front[slot];
+        if (v == ends.atI || v == ends.atJ) continue;
+        visit(Keyed(d2, v));
     }
+}
+constexpr int64_t kAnyDistance = std::numeric_limits<int64_t>::max();
+
+// The encoder's rank of the apex: how many admissible others come before it.
+uint32_t rankOfOther(const WalkState& st, const OpenEdge& edge, const FanEnds& ends, const int64_t predicted[3],
+                     Keyed apex, std::vector<Keyed>& closer) {
+    closer.clear();
+    forEachOther(st, ends, predicted, &apex.first, [&](Keyed key) {
+        if (key < apex) closer.push_back(key);
+    });
+    uint32_t rank = 0;
+    for (const Keyed& o : closer) rank += st.admissible(o.second, edge);
+    return rank;
+}
+
+// The decoder's admissible other of the given rank, or kNoVertex if there
+// are not that many. One pass keeps the rank + 8 nearest (rejecting most
+// vertices with one comparison); where fewer than rank + 1 of them are
+// admissible, all others are listed and sorted in growing batches.
+constexpr size_t kNearestKept = 64;
+uint32_t otherOfRank(const WalkState& st, const OpenEdge& edge, const FanEnds& ends, const int64_t predicted[3],
+                     uint32_t rank, std::vector<Keyed>& others) {
+    const size_t keep = size_t(rank) + 8;
+    if (keep <= kNearestKept) {
+        Keyed nearest[kNearestKept];
+        size_t count = 0;
+        int64_t within = kAnyDistance;  // once `keep` are kept: the farthest kept one's
+        forEachOther(st, ends, predicted, &within, [&](Keyed key) {
+            if (count == keep && !(key < nearest[keep - 1])) return;
+            size_t at = count < keep ? count++ : keep - 1;
+            for (; at > 0 && key < nearest[at - 1]; --at) nearest[at] = nearest[at - 1];
+            nearest[at] = key;
+            if (count == keep) within = nearest[keep - 1].first;
+        });
+        uint32_t seen = 0;
+        for (size_t i = 0; i < count; ++i)
+            if (st.admissible(nearest[i].second, edge) && seen++ == rank) return nearest[i].second;
+        if (count < keep) return kNoVertex;  // every other was looked at
+    }
+    others.clear();
+    const int64_t any = kAnyDistance;
+    forEachOther(st, ends, predicted, &any, [&](Keyed key) { others.push_back(key); });
+    size_t sorted = 0, batch = keep;
+    uint32_t seen = 0;
+    while (sorted < others.size()) {
+        const size_t end = std::min(others.size(), sorted + batch);
+        std::partial_sort(others.begin() + std::ptrdiff_t(sorted), others.begin() + std::ptrdiff_t(end), others.end());
+        for (; sorted < end; ++sorted)
+            if (st.admissible(others[sorted].second, edge) && seen++ == rank) return others[sorted].second;
+        batch *= 2;
+    }
+    return kNoVertex;
 }
 
 // The mesh being encoded: the true apex of each edge, and the input vertex
@@ -297,7 +367,8 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
         mark = now;
         return bits;
     };
-    std::vector<std::pair<int64_t, uint32_t>> others;
+    std::vector<Keyed> others;
+    uint64_t searched = 0;  // front vertices read for apexes elsewhere on it (OtherSearchBound)
     uint32_t previous = kNewVertex;
     size_t nextFace = 0;  // encoder: the first face that may start a component
     int64_t lastStart[3];
@@ -447,7 +518,24 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
                         throw Error(ErrorKind::Corrupt, "corrupt file: face " + std::to_string(st.traversal.triangleCount()) +
                                     " closes a fan that has no open end");
                 } else {
-                    rankedOthers(st, edge, ends, predicted, others);
+                    searched += st.front.size();
+                    // OtherSearchBound: the corpus reads at most 71 a face
+                    // (dragon-res3; scans 6, from igea to igea subdivided
+                    // twice, 4.3 M faces), the bound 4096.
+                    if (searched > st.search.floor + st.search.perFace * uint64_t(st.traversal.triangleCount())) {
+                        const std::string what = std::to_string(searched) + " front vertices read for apexes elsewhere on the front by face " +
+                                                 std::to_string(st.traversal.triangleCount());
+                        if constexpr (Io::kEncoding) {
+                            // Auto's attempt gives up (the ranks' file is kept).
+                            if (truth->giveUpAbove != 0) {
+                                truth->gaveUp = true;
+                                return;
+                            }
+                            throw Error(ErrorKind::InvalidInput, "the topological connectivity coder cannot code this mesh: " + what +
+                                        ", past the format's bound; code it with the distance ranks (--connectivity ranks or auto)");
+                        }
+                        throw Error(ErrorKind::Corrupt, "corrupt file: " + what + ", past the format's bound");
+                    }
                     uint32_t rank = 0;
                     if constexpr (Io::kEncoding) {
                         int64_t d2 = 0;
@@ -455,19 +543,18 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
                             const int64_t d = component(st.grid, apex, k) - predicted[k];
                             d2 += d * d;
                         }
-                        for (const auto& o : others) rank += o < std::make_pair(d2, apex);
+                        rank = rankOfOther(st, edge, ends, predicted, Keyed(d2, apex), others);
                     }
                     rank = uint32_t(codeResidual(connectivity, st.models.otherRank, 0,
                                                  [&](int) -> BitModel& { return st.models.noSign; }, int32_t(rank)));
                     if (stats) stats->rankBits += spent(connectivity, connectivityMark);
-                    if (rank >= others.size())
-                        throw Error(Io::kEncoding ? ErrorKind::Internal : ErrorKind::Corrupt,
-                                    "corrupt file: face " + std::to_string(st.traversal.triangleCount()) + " names front vertex " +
-                                        std::to_string(rank) + " of " + std::to_string(others.size()));
-                    std::nth_element(others.begin(), others.begin() + rank, others.end());
-                    if (Io::kEncoding && others[rank].second != apex)
-                        throw Error(ErrorKind::Internal, "internal error: the apex is not among the front's vertices");
-                    apex = others[rank].second;
+                    // The encoder knows its apex; the decoder finds it. (A
+                    // non-admissible apex is refused below either way.)
+                    const uint32_t found = Io::kEncoding ? apex : otherOfRank(st, edge, ends, predicted, rank, others);
+                    if (found == kNoVertex)
+                        throw Error(ErrorKind::Corrupt, "corrupt file: face " + std::to_string(st.traversal.triangleCount()) +
+                                    " names front vertex " + std::to_string(rank) + " of fewer admissible ones");
+                    apex = found;
                 }
                 if (!st.admissible(apex, edge))
                     throw Error(Io::kEncoding ? ErrorKind::Internal : ErrorKind::Corrupt,
@@ -489,6 +576,9 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
             st.leaveIfCulled(edge.vi);
             st.leaveIfCulled(edge.vj);
             if (apex != kNoVertex) st.leaveIfCulled(apex);
+            if (st.progress.reporter)
+                st.progress.reporter->tick(st.progress.from + st.progress.span * double(st.traversal.triangleCount()) /
+                                                                  double(std::max<size_t>(st.faceCount, 1)));
             if (st.traversal.triangleCount() > st.faceCount)
                 throw Error(ErrorKind::Corrupt, "corrupt file: more faces than the header's " + std::to_string(st.faceCount));
         }
@@ -558,6 +648,8 @@ TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits,
     truth.copyOf = &copyOf;
     truth.groupOriginal.assign(firstCopy, kNoVertex);
     WalkState st(vertexCount, faceCount, bits);
+    st.search = budget.search;
+    st.progress = budget.progress;
     st.copies = !copyOf.empty();
     if (st.copies) st.originalOf.assign(st.slotOf.size(), kNoVertex);
     RangeEncoder connectivityCoder, geometryCoder;
@@ -592,7 +684,8 @@ TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits,
 }
 
 TopologicalMesh decodeTopological(const uint8_t* connectivityBytes, size_t connectivitySize, const uint8_t* geometryBytes,
-                                  size_t geometrySize, size_t vertexCount, size_t copyCount, size_t faceCount, int bits) {
+                                  size_t geometrySize, size_t vertexCount, size_t copyCount, size_t faceCount, int bits,
+                                  const OtherSearchBound& search, const WalkProgress& progress) {
     if (bits < 1 || bits > 21) throw Error(ErrorKind::Corrupt, "corrupt file: bits must be 1 to 21");
     const size_t total = vertexCount + copyCount;
     // Each vertex codes at least three binary decisions, none cheaper than
@@ -601,6 +694,8 @@ TopologicalMesh decodeTopological(const uint8_t* connectivityBytes, size_t conne
         throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(total) + " vertices claimed by a topological section of " +
                     std::to_string(geometrySize) + " bytes");
     WalkState st(total, faceCount, bits);
+    st.search = search;
+    st.progress = progress;
     st.copies = copyCount > 0;
     if (st.copies) st.originalOf.assign(st.slotOf.size(), kNoVertex);
     RangeDecoder connectivityCoder(connectivityBytes, connectivitySize);

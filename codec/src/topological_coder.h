@@ -41,10 +41,30 @@
 
 namespace drm {
 
+class ProgressReporter;
+
+// Where a walk reports how far it is (ticks from `from` to from + span as
+// its faces are rebuilt), and learns of a cancel (Error, Cancelled).
+struct WalkProgress {
+    ProgressReporter* reporter = nullptr;
+    double from = 0, span = 0;
+};
+
 struct TopologicalStreams {
     std::vector<uint8_t> connectivity;  // symbols, the ranks of other vertices, which vertices are copies
     std::vector<uint8_t> geometry;      // positions, in the order the walk meets them
     bool complete = true;               // false: given up (TopologicalBudget), both empty
+};
+
+// How far the passes over the front for apexes elsewhere on it may read in
+// all, in front vertices: floor + perFace per face rebuilt. The format's
+// bound is the default; the encoder keeps to it (an attempt under a
+// giveUpAbove gives up past it, any other throws InvalidInput) and the
+// decoder refuses a file past it (Corrupt), so that no file makes decoding
+// quadratic. Tests lower it to reach both sides.
+struct OtherSearchBound {
+    uint64_t floor = uint64_t(1) << 22;
+    uint64_t perFace = 4096;
 };
 
 // What an encoder comparing coders can tell this one.
@@ -57,6 +77,8 @@ struct TopologicalBudget {
     // far, scaled to every face, pass this (0: never): the other coder's
     // file is then almost surely the smaller.
     uint64_t giveUpAbove = 0;
+    OtherSearchBound search;
+    WalkProgress progress;
 };
 
 // Where an encoding's bits went (for studies; not stored anywhere).
@@ -103,9 +125,12 @@ struct TopologicalMesh {
 
 // vertexCount counts the originals, copyCount the copies after them.
 // Throws Error (Corrupt) on streams that name an impossible triangle, run
-// out, or claim more vertices than their bytes can hold.
+// out, claim more vertices than their bytes can hold, or search the front
+// past `search`; Cancelled where `progress`'s reporter is told to stop.
 TopologicalMesh decodeTopological(const uint8_t* connectivity, size_t connectivitySize, const uint8_t* geometry,
-                                  size_t geometrySize, size_t vertexCount, size_t copyCount, size_t faceCount, int bits);
+                                  size_t geometrySize, size_t vertexCount, size_t copyCount, size_t faceCount, int bits,
+                                  const OtherSearchBound& search = OtherSearchBound(),
+                                  const WalkProgress& progress = WalkProgress());
 
 }  // namespace drm
 

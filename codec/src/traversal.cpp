@@ -12,8 +12,11 @@ uint64_t packEdge(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 }  // namespace
 
 Traversal::Traversal(size_t vertexCount, size_t expectedFaces, SpatialIndex* candidates)
-    : halfEdges_(std::min<size_t>(3 * expectedFaces + 16, kFirstHalfEdges), kHalfEdgeSlotsPerEdge), openEdges_(vertexCount, 0), state_(vertexCount, kUntouched),
-      candidates_(candidates) {
+    : halfEdges_(std::min<size_t>(3 * expectedFaces + 16, kFirstHalfEdges), kHalfEdgeSlotsPerEdge),
+      pieceStart_(vertexCount, kNoTriangle), pieceEnd_(vertexCount, kNoTriangle), morePieces_(vertexCount, 0),
+      fanEnd_(std::min<size_t>(expectedFaces + 16, kFirstHalfEdges), kHalfEdgeSlotsPerEdge),
+      fanStart_(std::min<size_t>(expectedFaces + 16, kFirstHalfEdges), kHalfEdgeSlotsPerEdge),
+      openEdges_(vertexCount, 0), state_(vertexCount, kUntouched), candidates_(candidates) {
     triangles_.reserve(3 * expectedFaces);
 }
 
@@ -41,6 +44,9 @@ void Traversal::startComponent(uint32_t a, uint32_t b, uint32_t c) {
     addHalfEdge(a, b, c);
     addHalfEdge(b, c, a);
     addHalfEdge(c, a, b);
+    linkCorner(a, b, c);
+    linkCorner(b, c, a);
+    linkCorner(c, a, b);
     triangles_.insert(triangles_.end(), {a, b, c});
     queue_.push_back(packEdge(a, b));
     queue_.push_back(packEdge(b, c));
@@ -82,6 +88,9 @@ void Traversal::attachApex(const OpenEdge& edge, uint32_t apex) {
     addHalfEdge(edge.vj, edge.vi, apex);
     addHalfEdge(edge.vi, apex, edge.vj);
     addHalfEdge(apex, edge.vj, edge.vi);
+    linkCorner(edge.vj, edge.vi, apex);
+    linkCorner(edge.vi, apex, edge.vj);
+    linkCorner(apex, edge.vj, edge.vi);
     triangles_.insert(triangles_.end(), {edge.vj, edge.vi, apex});
     // Left edge to the front keeps the traversal circling the current vertex
     // (paper, Section 3: 5.6% better than breadth first); right edge to the
@@ -122,8 +131,76 @@ void Traversal::insertHalfEdge(uint32_t a, uint32_t b, uint32_t value) {
     // igea subdivided once, 1.07M triangles: a few thousand slots instead
     // of 8M, 96 MB).
     if (halfEdges_.full())
-        halfEdges_.rebuildKeeping([this](uint32_t x, uint32_t y) { return (state_[x] != kCulled) | (state_[y] != kCulled); });
+        halfEdges_.rebuildKeeping(
+            [this](uint32_t x, uint32_t y, uint32_t) { return (state_[x] != kCulled) | (state_[y] != kCulled); });
     halfEdges_.insert(a, b, value);
+}
+
+void Traversal::linkCorner(uint32_t v, uint32_t p, uint32_t q) {
+    // The piece ending at p (its last triangle holds (p, v), the new one
+    // (v, p)) and the piece starting at q become one, from the first's start
+    // to the second's end; either may be missing (the triangle starts or
+    // ends the piece itself).
+    if (morePieces_[v] == 0) {
+        // v has one piece at most (nearly always): its own slot alone.
+        const uint32_t s = pieceStart_[v], e = pieceEnd_[v];
+        if (e == p && s == q) {
+            pieceStart_[v] = pieceEnd_[v] = kNoTriangle;  // closed into a ring
+        } else if (e == p) {
+            pieceEnd_[v] = q;
+        } else if (s == q) {
+            pieceStart_[v] = p;
+        } else if (s == kNoTriangle) {
+            pieceStart_[v] = p;
+            pieceEnd_[v] = q;
+        } else {
+            addPiece(v, p, q);  // a second piece
+        }
+        return;
+    }
+    const uint32_t startOfEndingAtP = fanStartTo(p, v), endOfStartingAtQ = fanEndFrom(v, q);
+    if (startOfEndingAtP != kNoTriangle && startOfEndingAtP == q) {
+        removePiece(v, q, p);  // one piece, closed into a ring around v: no ends left
+        return;
+    }
+    uint32_t start = p, end = q;
+    if (startOfEndingAtP != kNoTriangle) {
+        start = startOfEndingAtP;
+        removePiece(v, start, p);
+    }
+    if (endOfStartingAtQ != kNoTriangle) {
+        end = endOfStartingAtQ;
+        removePiece(v, q, end);
+    }
+    addPiece(v, start, end);
+}
+
+void Traversal::addPiece(uint32_t v, uint32_t start, uint32_t end) {
+    if (pieceStart_[v] == kNoTriangle) {
+        pieceStart_[v] = start;
+        pieceEnd_[v] = end;
+        return;
+    }
+    // As insertHalfEdge: a culled vertex's pieces are never asked for again
+    // (fanEnd_'s vertex is a key's first, fanStart_'s its second).
+    // Erased entries (kAbsent) are dropped too.
+    if (fanEnd_.full())
+        fanEnd_.rebuildKeeping([this](uint32_t x, uint32_t, uint32_t value) { return value != kNoTriangle && state_[x] != kCulled; });
+    if (fanStart_.full())
+        fanStart_.rebuildKeeping([this](uint32_t, uint32_t y, uint32_t value) { return value != kNoTriangle && state_[y] != kCulled; });
+    fanEnd_.assign(v, start, end);
+    fanStart_.assign(end, v, start);
+    ++morePieces_[v];
+}
+
+void Traversal::removePiece(uint32_t v, uint32_t start, uint32_t end) {
+    if (pieceStart_[v] == start) {
+        pieceStart_[v] = pieceEnd_[v] = kNoTriangle;
+        return;
+    }
+    fanEnd_.erase(v, start);
+    fanStart_.erase(end, v);
+    --morePieces_[v];
 }
 
 void Traversal::keepVertex(uint32_t v) {

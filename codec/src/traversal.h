@@ -48,6 +48,9 @@ public:
         if (n <= openEdges_.size()) return;
         openEdges_.resize(n, 0);
         state_.resize(n, kUntouched);
+        pieceStart_.resize(n, kNoTriangle);
+        pieceEnd_.resize(n, kNoTriangle);
+        morePieces_.resize(n, 0);
         if (!kept_.empty()) kept_.resize(n, 0);
     }
     // Right edges to the front too, just behind the left edge: the walk
@@ -76,6 +79,28 @@ public:
     static constexpr uint32_t kBoundary = 0xFFFFFFFEu;
     uint32_t thirdVertex(uint32_t a, uint32_t b) const { return halfEdges_.find(a, b); }
 
+    // The rebuilt triangles around a vertex v form pieces of its fan:
+    // chains of triangles (v, x0, x1), (v, x1, x2) .. (v, x[k-1], x[k]),
+    // each joined to the next by an edge at v, ending where the edge has no
+    // triangle on its other side yet. Each piece's two ends are kept as
+    // triangles are inserted (a few table updates per triangle), so that a
+    // piece's far end is one look-up, not a walk around the fan: a vertex
+    // of valence d made every walk around it O(d), the rebuild O(d^2)
+    // (a disc of 40,000 triangles fanned around its centre: 14 s).
+    //
+    // fanEndFrom(v, x0): x[k] of v's piece whose first triangle is
+    // (v, x0, x1), or kNoTriangle if (v, x0) starts no piece.
+    // fanStartTo(xk, v): x0 of v's piece whose last triangle is
+    // (v, x[k-1], xk), or kNoTriangle if (xk, v) ends none.
+    uint32_t fanEndFrom(uint32_t v, uint32_t x0) const {
+        if (pieceStart_[v] == x0) return pieceEnd_[v];
+        return morePieces_[v] == 0 ? kNoTriangle : fanEnd_.find(v, x0);
+    }
+    uint32_t fanStartTo(uint32_t xk, uint32_t v) const {
+        if (pieceEnd_[v] == xk) return pieceStart_[v];
+        return morePieces_[v] == 0 ? kNoTriangle : fanStart_.find(xk, v);
+    }
+
     // Triangles of the component being rebuilt (the start triangle counts).
     size_t componentTriangleCount() const { return triangleCount() - componentStart_; }
 
@@ -98,6 +123,10 @@ private:
     enum : uint8_t { kUntouched = 0, kActive = 1, kCulled = 2 };
 
     void addHalfEdge(uint32_t a, uint32_t b, uint32_t opposite);
+    // Triangle (v, p, q) joins v's fan pieces ending at p and starting at q.
+    void linkCorner(uint32_t v, uint32_t p, uint32_t q);
+    void addPiece(uint32_t v, uint32_t start, uint32_t end);
+    void removePiece(uint32_t v, uint32_t start, uint32_t end);
     void insertHalfEdge(uint32_t a, uint32_t b, uint32_t value);
     // The half-edge table's first capacity: it grows with the front.
     static constexpr size_t kFirstHalfEdges = 4096;
@@ -111,6 +140,13 @@ private:
     // Directed edge (a, b) -> the third vertex of its triangle, or kBoundary
     // for the missing twin of an edge that was coded as boundary.
     HalfEdgeMap halfEdges_;
+    // The fan pieces' ends (fanEndFrom, fanStartTo). A vertex's first piece
+    // in its own slot (kNoTriangle: none there), as nearly every active
+    // vertex has one piece; any more (morePieces_ per vertex) as
+    // (v, x0) -> xk and (xk, v) -> x0 in the tables, which like halfEdges_
+    // drop culled vertices' entries when they fill up.
+    std::vector<uint32_t> pieceStart_, pieceEnd_, morePieces_;
+    HalfEdgeMap fanEnd_, fanStart_;
     std::vector<uint32_t> openEdges_;  // per vertex: open edges it lies on
     std::vector<uint8_t> state_;
     std::vector<uint8_t> kept_;        // per vertex, 1 if never culled; empty if none is

@@ -48,7 +48,7 @@ TEST(HalfEdgeMap, AgreesWithStdMapThroughGrowthAndRebuilds) {
         // Drop the edges whose ends are both odd, as the traversal drops
         // those between culled vertices.
         auto keep = [&](uint32_t a, uint32_t b) { return a % 2 == 0 || b % 2 == 0 || round % 2 == 1; };
-        table.rebuildKeeping(keep);
+        table.rebuildKeeping([&](uint32_t a, uint32_t b, uint32_t) { return keep(a, b); });
         for (auto it = truth.begin(); it != truth.end();)
             it = keep(it->first.first, it->first.second) ? std::next(it) : truth.erase(it);
         ASSERT_LE(4 * slotsPerEdge * table.size(), std::max<size_t>(table.capacity(), 16));
@@ -63,7 +63,7 @@ TEST(HalfEdgeMap, RebuildAsksOfEntriesAndOfVertexZeroOnly) {
     HalfEdgeMap table(10, 4);
     for (uint32_t v = 1; v < 10; ++v) table.insert(v, v + 100, v);
     size_t asked = 0;
-    table.rebuildKeeping([&](uint32_t a, uint32_t b) {
+    table.rebuildKeeping([&](uint32_t a, uint32_t b, uint32_t) {
         EXPECT_TRUE((a == 0 && b == 0) || (a >= 1 && a < 10 && b == a + 100)) << a << " " << b;
         asked += a != 0;
         return a % 3 == 0;
@@ -76,12 +76,46 @@ TEST(HalfEdgeMap, RebuildAsksOfEntriesAndOfVertexZeroOnly) {
 TEST(HalfEdgeMap, RebuildKeepingNothingEmptiesTheTable) {
     HalfEdgeMap table(100);
     for (uint32_t v = 1; v < 100; ++v) table.insert(0, v, v);
-    table.rebuildKeeping([](uint32_t, uint32_t) { return false; });
+    table.rebuildKeeping([](uint32_t, uint32_t, uint32_t) { return false; });
     EXPECT_EQ(table.size(), 0u);
     EXPECT_EQ(table.capacity(), 16u);
     for (uint32_t v = 1; v < 100; ++v) EXPECT_EQ(table.find(0, v), HalfEdgeMap::kAbsent);
     EXPECT_TRUE(table.insert(0, 1, 7));
     EXPECT_EQ(table.find(0, 1), 7u);
+}
+
+// assign overwrites or inserts, erase makes an entry answer kAbsent, and a
+// rebuild that drops kAbsent values frees their slots (the traversal's fan
+// pieces come and go this way).
+TEST(HalfEdgeMap, AssignEraseAndTheRebuildThatDropsErasedEntries) {
+    std::mt19937 random(29);
+    HalfEdgeMap table(4, 4);
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> truth;
+    for (int round = 0; round < 8; ++round) {
+        for (int i = 0; i < 4000; ++i) {
+            const uint32_t a = random() % 300, b = random() % 300;
+            if (a == b) continue;
+            if (random() % 3 == 0) {
+                table.erase(a, b);
+                truth.erase({a, b});
+            } else {
+                const uint32_t value = random() % 1000;
+                table.assign(a, b, value);
+                truth[{a, b}] = value;
+            }
+        }
+        for (uint32_t a = 0; a < 300; ++a)
+            for (uint32_t b = 0; b < 300; ++b) {
+                const auto it = truth.find({a, b});
+                ASSERT_EQ(table.find(a, b), it == truth.end() ? HalfEdgeMap::kAbsent : it->second) << a << " " << b;
+            }
+        ASSERT_GE(table.size(), truth.size());  // erased entries hold their slots till a rebuild
+        table.rebuildKeeping([](uint32_t, uint32_t, uint32_t value) { return value != HalfEdgeMap::kAbsent; });
+        ASSERT_EQ(table.size(), truth.size());
+    }
+    table.erase(7, 8);  // absent: nothing happens
+    table.erase(301, 302);
+    EXPECT_EQ(table.size(), truth.size());
 }
 
 }  // namespace

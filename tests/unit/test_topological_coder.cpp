@@ -172,5 +172,78 @@ TEST(TopologicalCoder, BrokenStreamsAreRefused) {
     }
 }
 
+// The passes over the front for apexes elsewhere on it are bounded
+// (OtherSearchBound): with the bound lowered below what a mesh needs, its
+// encoding throws InvalidInput, or gives up where a giveUpAbove is set
+// (Auto's attempt, the ranks' file kept), and a file written under the
+// format's bound is refused as Corrupt by a decoder held to the lower one.
+// With the format's bound both sides pass.
+TEST(TopologicalCoder, TheSearchForApexesElsewhereOnTheFrontIsBounded) {
+    const Prepared in = prepare(drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/mech-holes-shark.ply"));
+    const size_t faces = in.triangles.size() / 3;
+    TopologicalStats stats;
+    const TopologicalStreams streams = encodeTopological(in.grid, 12, in.triangles, in.copyOf, nullptr, &stats);
+    ASSERT_GT(stats.symbols[4], 10u) << "the mesh has apexes elsewhere on the front";
+    OtherSearchBound low;
+    low.floor = 0;
+    low.perFace = 0;  // no search at all
+    TopologicalBudget budget;
+    budget.search = low;
+    try {
+        encodeTopological(in.grid, 12, in.triangles, in.copyOf, nullptr, nullptr, budget);
+        ADD_FAILURE() << "coded past a search bound of none";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::InvalidInput) << e.what();
+        EXPECT_NE(std::string(e.what()).find("--connectivity ranks"), std::string::npos) << e.what();
+    }
+    budget.giveUpAbove = uint64_t(1) << 40;  // a rival file no attempt projects past
+    EXPECT_FALSE(encodeTopological(in.grid, 12, in.triangles, in.copyOf, nullptr, nullptr, budget).complete);
+    try {
+        decodeTopological(streams.connectivity.data(), streams.connectivity.size(), streams.geometry.data(),
+                          streams.geometry.size(), in.originals, in.copyOf.size(), faces, 12, low);
+        ADD_FAILURE() << "decoded past a search bound of none";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::Corrupt) << e.what();
+        EXPECT_NE(std::string(e.what()).find("front vertices read"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(decodeStreams(streams, in, faces).triangles.size(), in.triangles.size());
+}
+
+// A topological file's walk reports its progress as it goes, encoding and
+// decoding (the MeshLab plugin's bar), and a cancel stops it: Cancelled.
+TEST(TopologicalCoder, ReportsProgressAndCanBeCancelled) {
+    const Mesh mesh = drm_test::icosphere(5);  // 20,480 faces: a report every 4,096 edges
+    EncodeOptions options;
+    options.connectivity = ConnectivityCoder::Topological;
+    std::vector<double> walked;
+    options.progress = [&](double fraction, const char* stage) {
+        if (std::string(stage) == "coding topologically") walked.push_back(fraction);
+        return true;
+    };
+    const Encoded encoded = encode(mesh, options);
+    ASSERT_GE(walked.size(), 4u);
+    EXPECT_TRUE(std::is_sorted(walked.begin(), walked.end()));
+    EXPECT_LT(walked.front(), 0.1);
+    EXPECT_GT(walked.back(), 0.5);
+    walked.clear();
+    auto decodingReports = [&](double fraction, const char* stage) {
+        if (std::string(stage) == "decoding vertices and connectivity") walked.push_back(fraction);
+        return true;
+    };
+    const Decoded decoded = decode(encoded.bytes.data(), encoded.bytes.size(), decodingReports);
+    EXPECT_EQ(decoded.mesh.faceCount(), mesh.faceCount());
+    ASSERT_GE(walked.size(), 4u);
+    EXPECT_TRUE(std::is_sorted(walked.begin(), walked.end()));
+    EXPECT_GT(walked.back(), 0.5);
+    size_t reports = 0;
+    try {
+        decode(encoded.bytes.data(), encoded.bytes.size(), [&](double fraction, const char*) { return ++reports < 3 || fraction < 0.2; });
+        ADD_FAILURE() << "a cancelled decode returned";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::Cancelled) << e.what();
+    }
+    EXPECT_GE(reports, 3u);
+}
+
 }  // namespace
 }  // namespace drm
