@@ -111,6 +111,7 @@ struct WalkState {
                     nullptr),
           admissible(traversal, true) {
         traversal.setDepthFirst();
+        traversal.trackFanPieces();  // fanEnds at every edge
         room(std::min(vertexCount, kFirstVertices));
     }
     // Tables for walk ids below n.

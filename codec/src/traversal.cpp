@@ -13,9 +13,7 @@ uint64_t packEdge(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
 
 Traversal::Traversal(size_t vertexCount, size_t expectedFaces, SpatialIndex* candidates)
     : halfEdges_(std::min<size_t>(3 * expectedFaces + 16, kFirstHalfEdges), kHalfEdgeSlotsPerEdge),
-      pieceStart_(vertexCount, kNoTriangle), pieceEnd_(vertexCount, kNoTriangle), morePieces_(vertexCount, 0),
-      fanEnd_(std::min<size_t>(expectedFaces + 16, kFirstHalfEdges), kHalfEdgeSlotsPerEdge),
-      fanStart_(std::min<size_t>(expectedFaces + 16, kFirstHalfEdges), kHalfEdgeSlotsPerEdge),
+      fanEnd_(16, kHalfEdgeSlotsPerEdge), fanStart_(16, kHalfEdgeSlotsPerEdge),
       openEdges_(vertexCount, 0), state_(vertexCount, kUntouched), candidates_(candidates) {
     triangles_.reserve(3 * expectedFaces);
 }
@@ -44,9 +42,11 @@ void Traversal::startComponent(uint32_t a, uint32_t b, uint32_t c) {
     addHalfEdge(a, b, c);
     addHalfEdge(b, c, a);
     addHalfEdge(c, a, b);
-    linkCorner(a, b, c);
-    linkCorner(b, c, a);
-    linkCorner(c, a, b);
+    if (trackPieces_) {
+        linkCorner(a, b, c);
+        linkCorner(b, c, a);
+        linkCorner(c, a, b);
+    }
     triangles_.insert(triangles_.end(), {a, b, c});
     queue_.push_back(packEdge(a, b));
     queue_.push_back(packEdge(b, c));
@@ -88,9 +88,11 @@ void Traversal::attachApex(const OpenEdge& edge, uint32_t apex) {
     addHalfEdge(edge.vj, edge.vi, apex);
     addHalfEdge(edge.vi, apex, edge.vj);
     addHalfEdge(apex, edge.vj, edge.vi);
-    linkCorner(edge.vj, edge.vi, apex);
-    linkCorner(edge.vi, apex, edge.vj);
-    linkCorner(apex, edge.vj, edge.vi);
+    if (trackPieces_) {
+        linkCorner(edge.vj, edge.vi, apex);
+        linkCorner(edge.vi, apex, edge.vj);
+        linkCorner(apex, edge.vj, edge.vi);
+    }
     triangles_.insert(triangles_.end(), {edge.vj, edge.vi, apex});
     // Left edge to the front keeps the traversal circling the current vertex
     // (paper, Section 3: 5.6% better than breadth first); right edge to the
@@ -141,18 +143,18 @@ void Traversal::linkCorner(uint32_t v, uint32_t p, uint32_t q) {
     // (v, p)) and the piece starting at q become one, from the first's start
     // to the second's end; either may be missing (the triangle starts or
     // ends the piece itself).
-    if (morePieces_[v] == 0) {
+    Pieces& own = pieces_[v];
+    if (own.more == 0) {
         // v has one piece at most (nearly always): its own slot alone.
-        const uint32_t s = pieceStart_[v], e = pieceEnd_[v];
-        if (e == p && s == q) {
-            pieceStart_[v] = pieceEnd_[v] = kNoTriangle;  // closed into a ring
-        } else if (e == p) {
-            pieceEnd_[v] = q;
-        } else if (s == q) {
-            pieceStart_[v] = p;
-        } else if (s == kNoTriangle) {
-            pieceStart_[v] = p;
-            pieceEnd_[v] = q;
+        if (own.end == p && own.start == q) {
+            own.start = own.end = kNoTriangle;  // closed into a ring
+        } else if (own.end == p) {
+            own.end = q;
+        } else if (own.start == q) {
+            own.start = p;
+        } else if (own.start == kNoTriangle) {
+            own.start = p;
+            own.end = q;
         } else {
             addPiece(v, p, q);  // a second piece
         }
@@ -176,9 +178,10 @@ void Traversal::linkCorner(uint32_t v, uint32_t p, uint32_t q) {
 }
 
 void Traversal::addPiece(uint32_t v, uint32_t start, uint32_t end) {
-    if (pieceStart_[v] == kNoTriangle) {
-        pieceStart_[v] = start;
-        pieceEnd_[v] = end;
+    Pieces& own = pieces_[v];
+    if (own.start == kNoTriangle) {
+        own.start = start;
+        own.end = end;
         return;
     }
     // As insertHalfEdge: a culled vertex's pieces are never asked for again
@@ -190,17 +193,18 @@ void Traversal::addPiece(uint32_t v, uint32_t start, uint32_t end) {
         fanStart_.rebuildKeeping([this](uint32_t, uint32_t y, uint32_t value) { return value != kNoTriangle && state_[y] != kCulled; });
     fanEnd_.assign(v, start, end);
     fanStart_.assign(end, v, start);
-    ++morePieces_[v];
+    ++own.more;
 }
 
 void Traversal::removePiece(uint32_t v, uint32_t start, uint32_t end) {
-    if (pieceStart_[v] == start) {
-        pieceStart_[v] = pieceEnd_[v] = kNoTriangle;
+    Pieces& own = pieces_[v];
+    if (own.start == start) {
+        own.start = own.end = kNoTriangle;
         return;
     }
     fanEnd_.erase(v, start);
     fanStart_.erase(end, v);
-    --morePieces_[v];
+    --own.more;
 }
 
 void Traversal::keepVertex(uint32_t v) {

@@ -48,9 +48,7 @@ public:
         if (n <= openEdges_.size()) return;
         openEdges_.resize(n, 0);
         state_.resize(n, kUntouched);
-        pieceStart_.resize(n, kNoTriangle);
-        pieceEnd_.resize(n, kNoTriangle);
-        morePieces_.resize(n, 0);
+        if (trackPieces_) pieces_.resize(n);
         if (!kept_.empty()) kept_.resize(n, 0);
     }
     // Right edges to the front too, just behind the left edge: the walk
@@ -88,17 +86,30 @@ public:
     // of valence d made every walk around it O(d), the rebuild O(d^2)
     // (a disc of 40,000 triangles fanned around its centre: 14 s).
     //
+    // Only a traversal told to (trackFanPieces, before the first
+    // component) keeps them; the topological coder, which asks at every
+    // edge, does. The distance ranks walk (fanEnds), as their searches
+    // around a vertex of high valence cost as much again, and the pieces
+    // would add 12 bytes a vertex to their decoder's peak (igea subdivided
+    // once: 156 -> 167 bytes a vertex).
+    void trackFanPieces() {
+        trackPieces_ = true;
+        pieces_.resize(openEdges_.size());
+    }
+    bool tracksFanPieces() const { return trackPieces_; }
     // fanEndFrom(v, x0): x[k] of v's piece whose first triangle is
     // (v, x0, x1), or kNoTriangle if (v, x0) starts no piece.
     // fanStartTo(xk, v): x0 of v's piece whose last triangle is
     // (v, x[k-1], xk), or kNoTriangle if (xk, v) ends none.
     uint32_t fanEndFrom(uint32_t v, uint32_t x0) const {
-        if (pieceStart_[v] == x0) return pieceEnd_[v];
-        return morePieces_[v] == 0 ? kNoTriangle : fanEnd_.find(v, x0);
+        const Pieces& p = pieces_[v];
+        if (p.start == x0) return p.end;
+        return p.more == 0 ? kNoTriangle : fanEnd_.find(v, x0);
     }
     uint32_t fanStartTo(uint32_t xk, uint32_t v) const {
-        if (pieceEnd_[v] == xk) return pieceStart_[v];
-        return morePieces_[v] == 0 ? kNoTriangle : fanStart_.find(xk, v);
+        const Pieces& p = pieces_[v];
+        if (p.end == xk) return p.start;
+        return p.more == 0 ? kNoTriangle : fanStart_.find(xk, v);
     }
 
     // Triangles of the component being rebuilt (the start triangle counts).
@@ -142,11 +153,16 @@ private:
     HalfEdgeMap halfEdges_;
     // The fan pieces' ends (fanEndFrom, fanStartTo). A vertex's first piece
     // in its own slot (kNoTriangle: none there), as nearly every active
-    // vertex has one piece; any more (morePieces_ per vertex) as
-    // (v, x0) -> xk and (xk, v) -> x0 in the tables, which like halfEdges_
-    // drop culled vertices' entries when they fill up.
-    std::vector<uint32_t> pieceStart_, pieceEnd_, morePieces_;
+    // vertex has one piece; any more (`more` of them) as (v, x0) -> xk and
+    // (xk, v) -> x0 in the tables, which like halfEdges_ drop culled
+    // vertices' entries when they fill up. One struct a vertex: a corner's
+    // update reads one cache line.
+    struct Pieces {
+        uint32_t start = kNoTriangle, end = kNoTriangle, more = 0;
+    };
+    std::vector<Pieces> pieces_;
     HalfEdgeMap fanEnd_, fanStart_;
+    bool trackPieces_ = false;
     std::vector<uint32_t> openEdges_;  // per vertex: open edges it lies on
     std::vector<uint8_t> state_;
     std::vector<uint8_t> kept_;        // per vertex, 1 if never culled; empty if none is

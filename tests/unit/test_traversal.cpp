@@ -186,12 +186,14 @@ uint32_t walkedFanEnd(const Traversal& t, uint32_t center, uint32_t o, bool cloc
 
 // Rebuilds a mesh with its true apexes, in the paper's order and depth
 // first, and at every open edge checks fanEnds (the traversal's fan pieces,
-// one look-up each) against the walk around each end.
+// one look-up each, as the topological coder keeps them) against the walk
+// around each end.
 void expectFanEndsAsWalked(const Mesh& mesh, bool depthFirst) {
     MeshTopology topology;
     ASSERT_EQ(topologyProblem(mesh.triangles, mesh.vertexCount(), &topology), "");
     Traversal t(mesh.vertexCount(), mesh.faceCount(), nullptr);
     if (depthFirst) t.setDepthFirst();
+    t.trackFanPieces();
     std::vector<uint8_t> faceDone(mesh.faceCount(), 0);
     size_t checked = 0, withEnds = 0, onBoundary = 0;
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -242,7 +244,7 @@ TEST(Traversal, FanPiecesGiveTheEndsAWalkAroundTheFanFinds) {
 // A disc fanned around its centre: every open edge at the centre asked for
 // its fan's end. The walk made that O(valence) per edge (40,000 triangles
 // took 14 s to decode topologically); the pieces answer it at once. Both
-// coders round-trip it.
+// coders round-trip it (the ranks, which walk, at this size).
 TEST(Traversal, AHighValenceFanRoundTrips) {
     const uint32_t rim = 3000;
     Mesh disc;
