@@ -56,8 +56,9 @@ FanEnds fanEnds(const OpenEdge& edge, const Traversal& t) {
     // Around vi the piece starts at (vi, vj) (the edge's own triangle);
     // around vj it ends there. Where its far edge was coded as boundary,
     // the fan ends on the boundary.
-    ends.atI = t.fanEndFrom(edge.vi, edge.vj);
-    ends.atJ = t.fanStartTo(edge.vi, edge.vj);
+    const uint32_t endAtI = t.fanEndFrom(edge.vi, edge.vj), startAtJ = t.fanStartTo(edge.vi, edge.vj);
+    ends.atI = endAtI == Traversal::kNoTriangle ? kNoVertex : endAtI;
+    ends.atJ = startAtJ == Traversal::kNoTriangle ? kNoVertex : startAtJ;
     if (ends.atI != kNoVertex && t.thirdVertex(edge.vi, ends.atI) == Traversal::kBoundary) {
         ends.atI = kNoVertex;
         ends.boundaryAtI = true;

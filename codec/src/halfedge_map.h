@@ -51,13 +51,17 @@ public:
     bool contains(uint32_t a, uint32_t b) const { return find(a, b) != kAbsent; }
 
     // Inserts (a, b) -> value; returns false (and changes nothing) if the
-    // edge is already present.
+    // edge is already present (an erased one is not: it takes the value).
     bool insert(uint32_t a, uint32_t b, uint32_t value) {
         if (full()) grow();
         const uint64_t key = pack(a, b);
         size_t slot = home(key);
         for (; keys_[slot] != kEmptyKey; slot = next(slot))
-            if (keys_[slot] == key) return false;
+            if (keys_[slot] == key) {
+                if (values_[slot] != kAbsent) return false;
+                values_[slot] = value;
+                return true;
+            }
         keys_[slot] = key;
         values_[slot] = value;
         ++size_;
@@ -89,6 +93,7 @@ public:
             }
     }
 
+    // Entries held, erased ones included until a rebuild or growth drops them.
     size_t size() const { return size_; }
     size_t capacity() const { return keys_.size(); }
 
@@ -167,7 +172,7 @@ private:
         oldValues.swap(values_);
         setCapacity(oldKeys.size() * 2);
         for (size_t i = 0; i < oldKeys.size(); ++i)
-            if (oldKeys[i] != kEmptyKey)
+            if (oldKeys[i] != kEmptyKey && oldValues[i] != kAbsent)  // erased entries are dropped
                 insert(uint32_t(oldKeys[i] >> 32), uint32_t(oldKeys[i]), oldValues[i]);
     }
 

@@ -19,6 +19,11 @@ public:
     void tick(double fraction) {
         if (callback_ && ++ticks_ % 4096 == 0) report(fraction);
     }
+    // The same, with the fraction worked out only when it is reported.
+    template <class Fraction>
+    void tickWith(Fraction fraction) {
+        if (callback_ && ++ticks_ % 4096 == 0) report(fraction());
+    }
 
 private:
     void report(double fraction) {

@@ -1,7 +1,6 @@
 #include "topological_coder.h"
 
 #include <algorithm>
-#include <limits>
 #include <string>
 #include <unordered_map>
 
@@ -9,6 +8,7 @@
 #include "bit_model.h"
 #include "common.h"
 #include "drm/drm.h"
+#include "front_ranks.h"
 #include "gap_closing.h"
 #include "local_frame.h"
 #include "mesh_check.h"
@@ -143,7 +143,7 @@ struct WalkState {
     Models models;
 
     // The front's positions beside it (frontAt: 3 per slot), so that the
-    // pass over it reads one array in order (forEachOther).
+    // pass over it reads one array in order (front_ranks.h).
     std::vector<int32_t> frontAt;
     void enter(uint32_t v) {
         room(size_t(v) + 1);
@@ -258,81 +258,26 @@ void codeNewVertex(Io& geometry, WalkState& st, const OpenEdge& edge, const int6
     }
 }
 
-// An apex elsewhere on the front: the admissible front vertices other than
-// the edge's fan ends, ordered by (squared distance to the prediction,
-// walk id). Admissibility costs edge look-ups, so it is asked only of the
-// few vertices that come before the apex in that order.
-using Keyed = std::pair<int64_t, uint32_t>;  // (squared distance, walk id)
-
-// Calls visit(key) for each front vertex other than the fan ends whose
-// squared distance is at most *within (which visit may lower as it goes):
-// most vertices are passed over on their distance alone.
-template <class Visit>
-void forEachOther(const WalkState& st, const FanEnds& ends, const int64_t predicted[3], const int64_t* within,
-                  Visit visit) {
-    const int32_t* at = st.frontAt.data();
-    const int64_t px = predicted[0], py = predicted[1], pz = predicted[2];
-    for (size_t slot = 0; slot < st.front.size(); ++slot, at += 3) {
-        const int64_t dx = at[0] - px, dy = at[1] - py, dz = at[2] - pz;
-        const int64_t d2 = dx * dx + dy * dy + dz * dz;
-        if (d2 > *within) continue;
-        const uint32_t v = st.front[slot];
-        if (v == ends.atI || v == ends.atJ) continue;
-        visit(Keyed(d2, v));
-    }
+// OtherSearchBound's test once `searched` front vertices have been read for
+// apexes elsewhere on the front: "" within it, else what passed it. (The
+// corpus reads at most 71 a face, dragon-res3; scans 6, from igea to igea
+// subdivided twice, 4.3 M faces; the bound is 4096.)
+std::string pastSearchBound(const WalkState& st, uint64_t searched) {
+    const uint64_t faces = st.traversal.triangleCount();
+    if (searched <= st.search.floor + st.search.perFace * faces) return std::string();
+    return std::to_string(searched) + " front vertices read for apexes elsewhere on the front by face " + std::to_string(faces) +
+           ", past the format's bound";
 }
-constexpr int64_t kAnyDistance = std::numeric_limits<int64_t>::max();
 
-// The encoder's rank of the apex: how many admissible others come before it.
-uint32_t rankOfOther(const WalkState& st, const OpenEdge& edge, const FanEnds& ends, const int64_t predicted[3],
-                     Keyed apex, std::vector<Keyed>& closer) {
-    closer.clear();
-    forEachOther(st, ends, predicted, &apex.first, [&](Keyed key) {
-        if (key < apex) closer.push_back(key);
+void reportProgress(WalkState& st) {
+    if (!st.progress.reporter) return;
+    st.progress.reporter->tickWith([&st] {
+        return st.progress.from + st.progress.span * double(st.traversal.triangleCount()) / double(std::max<size_t>(st.faceCount, 1));
     });
-    uint32_t rank = 0;
-    for (const Keyed& o : closer) rank += st.admissible(o.second, edge);
-    return rank;
 }
 
-// The decoder's admissible other of the given rank, or kNoVertex if there
-// are not that many. One pass keeps the rank + 8 nearest (rejecting most
-// vertices with one comparison); where fewer than rank + 1 of them are
-// admissible, all others are listed and sorted in growing batches.
-constexpr size_t kNearestKept = 64;
-uint32_t otherOfRank(const WalkState& st, const OpenEdge& edge, const FanEnds& ends, const int64_t predicted[3],
-                     uint32_t rank, std::vector<Keyed>& others) {
-    const size_t keep = size_t(rank) + 8;
-    if (keep <= kNearestKept) {
-        Keyed nearest[kNearestKept];
-        size_t count = 0;
-        int64_t within = kAnyDistance;  // once `keep` are kept: the farthest kept one's
-        forEachOther(st, ends, predicted, &within, [&](Keyed key) {
-            if (count == keep && !(key < nearest[keep - 1])) return;
-            size_t at = count < keep ? count++ : keep - 1;
-            for (; at > 0 && key < nearest[at - 1]; --at) nearest[at] = nearest[at - 1];
-            nearest[at] = key;
-            if (count == keep) within = nearest[keep - 1].first;
-        });
-        uint32_t seen = 0;
-        for (size_t i = 0; i < count; ++i)
-            if (st.admissible(nearest[i].second, edge) && seen++ == rank) return nearest[i].second;
-        if (count < keep) return kNoVertex;  // every other was looked at
-    }
-    others.clear();
-    const int64_t any = kAnyDistance;
-    forEachOther(st, ends, predicted, &any, [&](Keyed key) { others.push_back(key); });
-    size_t sorted = 0, batch = keep;
-    uint32_t seen = 0;
-    while (sorted < others.size()) {
-        const size_t end = std::min(others.size(), sorted + batch);
-        std::partial_sort(others.begin() + std::ptrdiff_t(sorted), others.begin() + std::ptrdiff_t(end), others.end());
-        for (; sorted < end; ++sorted)
-            if (st.admissible(others[sorted].second, edge) && seen++ == rank) return others[sorted].second;
-        batch *= 2;
-    }
-    return kNoVertex;
-}
+// The front as front_ranks.h reads it.
+FrontView frontOf(const WalkState& st) { return FrontView{st.frontAt.data(), st.front.data(), st.front.size()}; }
 
 // The mesh being encoded: the true apex of each edge, and the input vertex
 // behind each id. The decoder passes none.
@@ -368,7 +313,7 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
         mark = now;
         return bits;
     };
-    std::vector<Keyed> others;
+    std::vector<RankKey> others;  // front_ranks.h's scratch
     uint64_t searched = 0;  // front vertices read for apexes elsewhere on it (OtherSearchBound)
     uint32_t previous = kNewVertex;
     size_t nextFace = 0;  // encoder: the first face that may start a component
@@ -520,23 +465,21 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
                                     " closes a fan that has no open end");
                 } else {
                     searched += st.front.size();
-                    // OtherSearchBound: the corpus reads at most 71 a face
-                    // (dragon-res3; scans 6, from igea to igea subdivided
-                    // twice, 4.3 M faces), the bound 4096.
-                    if (searched > st.search.floor + st.search.perFace * uint64_t(st.traversal.triangleCount())) {
-                        const std::string what = std::to_string(searched) + " front vertices read for apexes elsewhere on the front by face " +
-                                                 std::to_string(st.traversal.triangleCount());
+                    if (stats) stats->frontRead = searched;
+                    const std::string past = pastSearchBound(st, searched);
+                    if (!past.empty()) {
                         if constexpr (Io::kEncoding) {
                             // Auto's attempt gives up (the ranks' file is kept).
                             if (truth->giveUpAbove != 0) {
                                 truth->gaveUp = true;
                                 return;
                             }
-                            throw Error(ErrorKind::InvalidInput, "the topological connectivity coder cannot code this mesh: " + what +
-                                        ", past the format's bound; code it with the distance ranks (--connectivity ranks or auto)");
+                            throw Error(ErrorKind::InvalidInput, "the topological connectivity coder cannot code this mesh: " + past +
+                                        "; code it with the distance ranks (--connectivity ranks or auto)");
                         }
-                        throw Error(ErrorKind::Corrupt, "corrupt file: " + what + ", past the format's bound");
+                        throw Error(ErrorKind::Corrupt, "corrupt file: " + past);
                     }
+                    auto admissible = [&](uint32_t v) { return st.admissible(v, edge); };
                     uint32_t rank = 0;
                     if constexpr (Io::kEncoding) {
                         int64_t d2 = 0;
@@ -544,14 +487,15 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
                             const int64_t d = component(st.grid, apex, k) - predicted[k];
                             d2 += d * d;
                         }
-                        rank = rankOfOther(st, edge, ends, predicted, Keyed(d2, apex), others);
+                        rank = rankAmongFront(frontOf(st), predicted, ends.atI, ends.atJ, RankKey(d2, apex), admissible, others);
                     }
                     rank = uint32_t(codeResidual(connectivity, st.models.otherRank, 0,
                                                  [&](int) -> BitModel& { return st.models.noSign; }, int32_t(rank)));
                     if (stats) stats->rankBits += spent(connectivity, connectivityMark);
                     // The encoder knows its apex; the decoder finds it. (A
                     // non-admissible apex is refused below either way.)
-                    const uint32_t found = Io::kEncoding ? apex : otherOfRank(st, edge, ends, predicted, rank, others);
+                    const uint32_t found =
+                        Io::kEncoding ? apex : frontVertexOfRank(frontOf(st), predicted, ends.atI, ends.atJ, rank, admissible, others);
                     if (found == kNoVertex)
                         throw Error(ErrorKind::Corrupt, "corrupt file: face " + std::to_string(st.traversal.triangleCount()) +
                                     " names front vertex " + std::to_string(rank) + " of fewer admissible ones");
@@ -577,9 +521,7 @@ void walk(Io& connectivity, Io& geometry, WalkState& st, Truth* truth, Topologic
             st.leaveIfCulled(edge.vi);
             st.leaveIfCulled(edge.vj);
             if (apex != kNoVertex) st.leaveIfCulled(apex);
-            if (st.progress.reporter)
-                st.progress.reporter->tick(st.progress.from + st.progress.span * double(st.traversal.triangleCount()) /
-                                                                  double(std::max<size_t>(st.faceCount, 1)));
+            reportProgress(st);
             if (st.traversal.triangleCount() > st.faceCount)
                 throw Error(ErrorKind::Corrupt, "corrupt file: more faces than the header's " + std::to_string(st.faceCount));
         }

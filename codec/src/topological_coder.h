@@ -88,6 +88,7 @@ struct TopologicalStats {
     uint64_t symbols[5] = {};
     double symbolBits = 0, rankBits = 0;             // connectivity
     double newVertexBits = 0, otherPositionBits = 0;  // geometry: walk's new vertices, starts and isolated ones
+    uint64_t frontRead = 0;  // front vertices read for apexes elsewhere on it (OtherSearchBound)
 };
 
 // The decoded numbering, as the encoder sees it. Decoded vertices are the
@@ -110,7 +111,9 @@ struct TopologicalLayout {
 // same grid point). triangles: a mesh the traversal can take (as
 // cutIntoManifold gives it: each edge in at most two faces, of opposite
 // orientations; each vertex the centre of one fan; no face repeating a
-// vertex). Throws Error on a mesh the walk cannot take.
+// vertex). Throws Error on a mesh the walk cannot take, and (InvalidInput)
+// on one whose apexes elsewhere on the front need a search past
+// budget.search, unless budget.giveUpAbove is set (then it gives up).
 TopologicalStreams encodeTopological(const std::vector<int32_t>& grid, int bits, const std::vector<uint32_t>& triangles,
                                      const std::vector<uint32_t>& copyOf, TopologicalLayout* layout = nullptr,
                                      TopologicalStats* stats = nullptr, const TopologicalBudget& budget = TopologicalBudget());

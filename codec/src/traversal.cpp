@@ -138,6 +138,12 @@ void Traversal::insertHalfEdge(uint32_t a, uint32_t b, uint32_t value) {
     halfEdges_.insert(a, b, value);
 }
 
+void Traversal::trackFanPieces() {
+    if (!triangles_.empty()) throw Error(ErrorKind::Internal, "internal error: fan pieces tracked after the first triangle");
+    trackPieces_ = true;
+    pieces_.resize(openEdges_.size());
+}
+
 void Traversal::linkCorner(uint32_t v, uint32_t p, uint32_t q) {
     // The piece ending at p (its last triangle holds (p, v), the new one
     // (v, p)) and the piece starting at q become one, from the first's start

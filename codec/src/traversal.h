@@ -90,12 +90,9 @@ public:
     // component) keeps them; the topological coder, which asks at every
     // edge, does. The distance ranks walk (fanEnds), as their searches
     // around a vertex of high valence cost as much again, and the pieces
-    // would add 12 bytes a vertex to their decoder's peak (igea subdivided
+    // (12 bytes a vertex) would raise their decoder's peak (igea subdivided
     // once: 156 -> 167 bytes a vertex).
-    void trackFanPieces() {
-        trackPieces_ = true;
-        pieces_.resize(openEdges_.size());
-    }
+    void trackFanPieces();
     bool tracksFanPieces() const { return trackPieces_; }
     // fanEndFrom(v, x0): x[k] of v's piece whose first triangle is
     // (v, x0, x1), or kNoTriangle if (v, x0) starts no piece.
@@ -151,12 +148,13 @@ private:
     // Directed edge (a, b) -> the third vertex of its triangle, or kBoundary
     // for the missing twin of an edge that was coded as boundary.
     HalfEdgeMap halfEdges_;
-    // The fan pieces' ends (fanEndFrom, fanStartTo). A vertex's first piece
-    // in its own slot (kNoTriangle: none there), as nearly every active
-    // vertex has one piece; any more (`more` of them) as (v, x0) -> xk and
-    // (xk, v) -> x0 in the tables, which like halfEdges_ drop culled
-    // vertices' entries when they fill up. One struct a vertex: a corner's
-    // update reads one cache line.
+    // The fan pieces' ends (fanEndFrom, fanStartTo). Nearly every active
+    // vertex has one piece: a piece of a vertex whose own slot is free goes
+    // there (kNoTriangle: none), any other into the tables as (v, x0) -> xk
+    // and (xk, v) -> x0 (`more`: how many of v's are there; the own slot may
+    // be free meanwhile). Like halfEdges_, the tables drop culled vertices'
+    // entries when they fill up. One struct a vertex, so that a corner's
+    // update mostly reads one cache line.
     struct Pieces {
         uint32_t start = kNoTriangle, end = kNoTriangle, more = 0;
     };

@@ -113,6 +113,20 @@ TEST(HalfEdgeMap, AssignEraseAndTheRebuildThatDropsErasedEntries) {
         table.rebuildKeeping([](uint32_t, uint32_t, uint32_t value) { return value != HalfEdgeMap::kAbsent; });
         ASSERT_EQ(table.size(), truth.size());
     }
+    // An erased edge may be inserted again, and growth drops erased entries.
+    HalfEdgeMap again(4, 4);
+    again.assign(5, 6, 1);
+    again.erase(5, 6);
+    EXPECT_TRUE(again.insert(5, 6, 2));
+    EXPECT_EQ(again.find(5, 6), 2u);
+    EXPECT_FALSE(again.insert(5, 6, 3));
+    EXPECT_EQ(again.size(), 1u);
+    HalfEdgeMap growing(2, 2);
+    for (uint32_t v = 1; v <= 8; ++v) growing.assign(0, v, v);
+    for (uint32_t v = 1; v <= 8; v += 2) growing.erase(0, v);
+    for (uint32_t v = 9; v <= 40; ++v) growing.insert(0, v, v);  // grows past its first capacity
+    for (uint32_t v = 1; v <= 40; ++v) EXPECT_EQ(growing.find(0, v), v <= 8 && v % 2 == 1 ? HalfEdgeMap::kAbsent : v) << v;
+    EXPECT_EQ(growing.size(), 36u);
     table.erase(7, 8);  // absent: nothing happens
     table.erase(301, 302);
     EXPECT_EQ(table.size(), truth.size());

@@ -207,6 +207,25 @@ TEST(TopologicalCoder, TheSearchForApexesElsewhereOnTheFrontIsBounded) {
         EXPECT_NE(std::string(e.what()).find("front vertices read"), std::string::npos) << e.what();
     }
     EXPECT_EQ(decodeStreams(streams, in, faces).triangles.size(), in.triangles.size());
+    // At the bound exactly, both sides pass; one front vertex less, both refuse.
+    ASSERT_GT(stats.frontRead, 0u);
+    OtherSearchBound exact;
+    exact.floor = stats.frontRead;
+    exact.perFace = 0;
+    budget = TopologicalBudget();
+    budget.search = exact;
+    EXPECT_EQ(encodeTopological(in.grid, 12, in.triangles, in.copyOf, nullptr, nullptr, budget).connectivity, streams.connectivity);
+    EXPECT_EQ(decodeTopological(streams.connectivity.data(), streams.connectivity.size(), streams.geometry.data(),
+                                streams.geometry.size(), in.originals, in.copyOf.size(), faces, 12, exact)
+                  .triangles.size(),
+              in.triangles.size());
+    OtherSearchBound under = exact;
+    --under.floor;
+    budget.search = under;
+    EXPECT_THROW(encodeTopological(in.grid, 12, in.triangles, in.copyOf, nullptr, nullptr, budget), Error);
+    EXPECT_THROW(decodeTopological(streams.connectivity.data(), streams.connectivity.size(), streams.geometry.data(),
+                                   streams.geometry.size(), in.originals, in.copyOf.size(), faces, 12, under),
+                 Error);
 }
 
 // A topological file's walk reports its progress as it goes, encoding and
