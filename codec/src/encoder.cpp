@@ -104,6 +104,26 @@ constexpr size_t kTrySectionNumberingBelowFaces = 20000;
 // The topological attempt (ConnectivityCoder::Auto) gives up when its
 // projected size passes the ranks' file by this factor.
 constexpr double kTopologicalGiveUp = 1.05;
+// Hubs: the distance ranks' searches around a vertex of d faces cost about
+// d^2 in all (its neighbours lie about it at like distances), so that a
+// disc of 4,000 triangles fanned around its centre took 1.5 s to encode,
+// 10,000 of them 5.8 s; the topological coder takes 0.02 s. Where the faces
+// at each vertex, squared and summed, pass this floor and this much a face,
+// Auto codes topologically alone (the ranks only if that cannot be coded).
+// Ordinary meshes sum about 18 a face (valence 6); the corpus's most, crank
+// (a vertex of 132 faces), stays far below.
+constexpr uint64_t kHubWorkFloor = uint64_t(1) << 22;
+constexpr uint64_t kHubWorkPerFace = 64;
+
+// Whether a mesh has hubs enough for the ranks to take quadratic time
+// (kHubWorkFloor). Indices in range (checkIndices).
+bool hasHubs(const Mesh& mesh) {
+    std::vector<uint32_t> facesAt(mesh.vertexCount(), 0);
+    for (uint32_t v : mesh.triangles) ++facesAt[v];
+    uint64_t work = 0;
+    for (uint32_t d : facesAt) work += uint64_t(d) * d;
+    return work > kHubWorkFloor + kHubWorkPerFace * uint64_t(mesh.faceCount());
+}
 
 // What every attempt at one mesh shares, and only reads: the grid, the
 // quantized input and the input cut into manifold pieces.
@@ -1188,10 +1208,14 @@ Attempt encodeWithChosenGeometry(const Mesh& mesh, const PreparedMesh& prepared,
 // connectivity named by topology, the positions in the order the walk
 // meets them. The repairs and vertex order sections are as for ranks.
 // giveUpAbove (0: never): the size of the file to beat; past it (by the
-// coder's projection) the attempt gives up and returns no file.
+// coder's projection), or past the format's search bound, the attempt
+// gives up and returns no file. `alone`: no ranks' attempt came before (for
+// the progress bar).
+constexpr uint64_t kNoRivalFile = ~uint64_t(0);  // a giveUpAbove for the search bound alone
 std::optional<Attempt> encodeTopologically(const Mesh& mesh, const PreparedMesh& prepared, const ManifoldCut& cut,
-                                           const EncodeOptions& options, ProgressReporter& progress, uint64_t giveUpAbove = 0) {
-    progress.stage("coding topologically", giveUpAbove == 0 ? 0.01 : 0.9);
+                                           const EncodeOptions& options, ProgressReporter& progress, bool alone,
+                                           uint64_t giveUpAbove = 0) {
+    progress.stage("coding topologically", alone ? 0.01 : 0.9);
     const size_t originals = mesh.vertexCount(), copies = cut.copyOf.size();
     std::vector<int32_t> grid(prepared.quantized);  // copies at their originals' grid points
     grid.reserve(3 * (originals + copies));
@@ -1205,7 +1229,7 @@ std::optional<Attempt> encodeTopologically(const Mesh& mesh, const PreparedMesh&
     budget.giveUpAbove = giveUpAbove;
     // Alone it is the whole encoding (to 0.95); after the ranks, their
     // last stretch.
-    budget.progress = giveUpAbove == 0 ? WalkProgress{&progress, 0.01, 0.94} : WalkProgress{&progress, 0.9, 0.05};
+    budget.progress = alone ? WalkProgress{&progress, 0.01, 0.94} : WalkProgress{&progress, 0.9, 0.05};
     TopologicalStreams streams = encodeTopological(grid, prepared.grid.bits, *prepared.triangles, cut.copyOf, &layout, nullptr, budget);
     if (!streams.complete) return std::nullopt;
     // Decoded vertex -> input vertex: of an input vertex and its copies, the
@@ -1298,8 +1322,15 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     if (options.connectivity == ConnectivityCoder::Topological && options.geometry != GeometryCoder::Auto)
         throw Error(ErrorKind::InvalidInput, std::string("the topological connectivity coder codes the positions itself; geometry coder ") +
                     geometryCoderName(options.geometry) + " goes with the distance ranks");
+    // Auto, with nothing asked for that only the ranks have (a vertex coder,
+    // a predictor, levers, curvature, parts), chooses the coder.
+    const bool ranksAskedFor = options.geometry != GeometryCoder::Auto || options.predictor != Predictor::Auto ||
+                               options.curvature || options.connectivityParts != 0 ||
+                               leversName(options.levers) != leversName(Levers());
+    const bool coderChosen = options.connectivity == ConnectivityCoder::Auto && !ranksAskedFor;
+    const bool hubs = coderChosen && hasHubs(mesh);
     // The topological coder alone needs no vertex section of its own.
-    const bool ranks = options.connectivity != ConnectivityCoder::Topological;
+    const bool ranks = options.connectivity != ConnectivityCoder::Topological && !hubs;
     if (options.connectivityParts < 0 || options.connectivityParts > 2)
         throw Error(ErrorKind::InvalidInput, "connectivity parts " + std::to_string(options.connectivityParts) +
                     " is not 0 (as the mesh asks), 1 or 2");
@@ -1356,9 +1387,15 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
     prepared.repairs.duplicateOf = std::move(cut.duplicateOf);
     prepared.repairs.duplicateReversed = std::move(cut.duplicateReversed);
     if (!ranks) {
-        Attempt topological = *encodeTopologically(mesh, prepared, cut, options, progress);
-        topological.encoded.quantized = std::move(prepared.quantized);
-        return topological;
+        std::optional<Attempt> topological =
+            encodeTopologically(mesh, prepared, cut, options, progress, true, hubs ? kNoRivalFile : 0);
+        if (!topological) {  // hubs, and past the search bound: the ranks after all
+            EncodeOptions asRanks = options;
+            asRanks.connectivity = ConnectivityCoder::Ranks;
+            return encodeConnectivity(mesh, asRanks, progress, grid);
+        }
+        topological->encoded.quantized = std::move(prepared.quantized);
+        return std::move(*topological);
     }
 
     // While the vertex section is coded on the second thread, the first
@@ -1392,20 +1429,14 @@ Attempt encodeConnectivity(const Mesh& mesh, const EncodeOptions& options, Progr
             if (refined.encoded.bytes.size() < best.encoded.bytes.size()) best = std::move(refined);
         }
     }
-    // Auto (with the vertex coder left to the encoder): the topological
-    // coder too, the smaller file kept.
+    // Auto (coderChosen): the topological coder too, the smaller file kept.
     // It gives up once its projected size passes the ranks' file by
     // kTopologicalGiveUp: on scans, where the ranks win by 11 to 13 %
-    // (bunny, horse, igea), after a quarter of the faces. Options that only
-    // the ranks have (a vertex coder, a predictor, levers, curvature,
-    // parts) ask for the ranks.
-    const bool ranksAskedFor = options.geometry != GeometryCoder::Auto || options.predictor != Predictor::Auto ||
-                               options.curvature || options.connectivityParts != 0 ||
-                               leversName(options.levers) != leversName(Levers());
-    if (options.connectivity == ConnectivityCoder::Auto && !ranksAskedFor) {
+    // (bunny, horse, igea), after a quarter of the faces.
+    if (coderChosen) {
         const uint64_t rival = best.encoded.bytes.size();
-        std::optional<Attempt> topological =
-            encodeTopologically(mesh, prepared, cut, options, progress, uint64_t(double(rival) * kTopologicalGiveUp) + 64);
+        std::optional<Attempt> topological = encodeTopologically(mesh, prepared, cut, options, progress, false,
+                                                                 uint64_t(double(rival) * kTopologicalGiveUp) + 64);
         if (topological && topological->encoded.bytes.size() < rival) best = std::move(*topological);
     }
     // The attempts only read the quantized input; the one kept takes it.

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 #include <set>
+#include <string>
 
 #include "drm/drm.h"
 #include "gap_closing.h"
@@ -245,7 +246,8 @@ TEST(Traversal, FanPiecesGiveTheEndsAWalkAroundTheFanFinds) {
 // A disc fanned around its centre: every open edge at the centre asked for
 // its fan's end. The walk made that O(valence) per edge (40,000 triangles
 // took 14 s to decode topologically); the pieces answer it at once. Both
-// coders round-trip it (the ranks, which walk, at this size).
+// coders round-trip it (the ranks, which walk, at this size), and Auto
+// takes the topological coder alone.
 TEST(Traversal, AHighValenceFanRoundTrips) {
     const uint32_t rim = 3000;
     Mesh disc;
@@ -260,17 +262,38 @@ TEST(Traversal, AHighValenceFanRoundTrips) {
     for (uint32_t k = 0; k < rim; ++k) disc.triangles.insert(disc.triangles.end(), {0, 1 + k, 1 + (k + 1) % rim});
     expectFanEndsAsWalked(disc, false);
     expectFanEndsAsWalked(disc, true);
-    for (ConnectivityCoder coder : {ConnectivityCoder::Ranks, ConnectivityCoder::Topological}) {
+    // Auto codes a mesh with such a hub topologically alone (the ranks'
+    // searches around it would cost about the valence squared).
+    for (ConnectivityCoder coder : {ConnectivityCoder::Ranks, ConnectivityCoder::Topological, ConnectivityCoder::Auto}) {
         SCOPED_TRACE(connectivityCoderName(coder));
         EncodeOptions options;
         options.connectivity = coder;
         options.bits = 16;
         options.keepVertexOrder = true;
+        std::set<std::string> stages;
+        options.progress = [&](double, const char* stage) {
+            stages.insert(stage);
+            return true;
+        };
         const Encoded encoded = encode(disc, options);
-        EXPECT_EQ(encoded.stats.connectivity, coder);
+        EXPECT_EQ(encoded.stats.connectivity, coder == ConnectivityCoder::Ranks ? coder : ConnectivityCoder::Topological);
+        EXPECT_EQ(stages.count("ranking"), coder == ConnectivityCoder::Ranks ? 1u : 0u) << "the ranks' attempt";
         const Mesh decoded = decode(encoded.bytes).mesh;
         EXPECT_EQ(orientedTriangles(decoded), orientedTriangles(disc));
     }
+}
+
+// Without a hub, Auto makes both attempts (the ranks' first).
+TEST(Traversal, AutoRanksAMeshWithoutHubs) {
+    std::set<std::string> stages;
+    EncodeOptions options;
+    options.progress = [&](double, const char* stage) {
+        stages.insert(stage);
+        return true;
+    };
+    encode(gridPatch(40, 40), options);
+    EXPECT_EQ(stages.count("ranking"), 1u);
+    EXPECT_EQ(stages.count("coding topologically"), 1u);
 }
 
 TEST(MeshCheck, RefusesOnlyWhatNoFileCanHold) {
