@@ -52,36 +52,10 @@ public:
 
     // Inserts (a, b) -> value; returns false (and changes nothing) if the
     // edge is already present (an erased one is not: it takes the value).
-    bool insert(uint32_t a, uint32_t b, uint32_t value) {
-        if (full()) grow();
-        const uint64_t key = pack(a, b);
-        size_t slot = home(key);
-        for (; keys_[slot] != kEmptyKey; slot = next(slot))
-            if (keys_[slot] == key) {
-                if (values_[slot] != kAbsent) return false;
-                values_[slot] = value;
-                return true;
-            }
-        keys_[slot] = key;
-        values_[slot] = value;
-        ++size_;
-        return true;
-    }
+    bool insert(uint32_t a, uint32_t b, uint32_t value) { return put(a, b, value, false); }
 
     // Sets (a, b) -> value, inserting the edge or overwriting its value.
-    void assign(uint32_t a, uint32_t b, uint32_t value) {
-        if (full()) grow();
-        const uint64_t key = pack(a, b);
-        size_t slot = home(key);
-        for (; keys_[slot] != kEmptyKey; slot = next(slot))
-            if (keys_[slot] == key) {
-                values_[slot] = value;
-                return;
-            }
-        keys_[slot] = key;
-        values_[slot] = value;
-        ++size_;
-    }
+    void assign(uint32_t a, uint32_t b, uint32_t value) { put(a, b, value, true); }
     // Makes (a, b) answer kAbsent. Its slot stays taken (linear probing has
     // no other tombstone) until a rebuildKeeping that drops it.
     void erase(uint32_t a, uint32_t b) {
@@ -149,6 +123,22 @@ private:
     static constexpr uint64_t kEmptyKey = ~uint64_t(0);
 
     static uint64_t pack(uint32_t a, uint32_t b) { return (uint64_t(a) << 32) | b; }
+    // insert (overwrite false: a present value stays) and assign.
+    bool put(uint32_t a, uint32_t b, uint32_t value, bool overwrite) {
+        if (full()) grow();
+        const uint64_t key = pack(a, b);
+        size_t slot = home(key);
+        for (; keys_[slot] != kEmptyKey; slot = next(slot))
+            if (keys_[slot] == key) {
+                if (!overwrite && values_[slot] != kAbsent) return false;
+                values_[slot] = value;
+                return true;
+            }
+        keys_[slot] = key;
+        values_[slot] = value;
+        ++size_;
+        return true;
+    }
     size_t next(size_t slot) const { return slot + 1 == capacity_ ? 0 : slot + 1; }
     size_t home(uint64_t key) const {
         // Fibonacci hashing: the top bits of the product depend on every bit
