@@ -54,9 +54,9 @@ Predictor parsePredictor(const std::string& name) {
 
 const char* connectivityCoderName(ConnectivityCoder c) {
     switch (c) {
-    case ConnectivityCoder::Auto: return "auto";
-    case ConnectivityCoder::Ranks: return "ranks";
-    case ConnectivityCoder::Topological: return "topological";
+        case ConnectivityCoder::Auto: return "auto";
+        case ConnectivityCoder::Ranks: return "ranks";
+        case ConnectivityCoder::Topological: return "topological";
     }
     return "unknown";
 }
