@@ -24,7 +24,7 @@ const char* const kDecodeHelp =
     "under the names MeshLab reads: nx ny nz, red green blue alpha, quality,\n"
     "texture_u texture_v, face texcoord, texnumber, colour, quality, comment\n"
     "TextureFile) or OBJ (v with colours, vt, vn, usemtl groups, and the .mtl\n"
-    "file the input came with, written beside OUT.obj). What the chosen format\n"
+    "file as OUT.mtl beside OUT.obj: no other file is written). What the format\n"
     "cannot hold is named in a note. Texture images are not in .drm files: keep\n"
     "them beside the output. Vertices come out in the order the file stores\n"
     "them: the input's order if it was encoded with --keep-vertex-order.\n"
@@ -61,6 +61,8 @@ struct DecodedFile {
 // Reads, decodes and writes one file; throws drm::Error naming the input.
 DecodedFile decodeFile(const std::string& input, const std::string& output, drm::NeighbourIndex index, int threads,
                        ProgressBar* bar) {
+    drm::vcgio::refuseOverwritingInput(input, output);
+    if (hasExtension(output, ".obj")) drm::vcgio::refuseOverwritingInput(input, drm::vcgio::objLibraryPath(output));
     const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(input);
     drm::Decoded decoded;
     try {

@@ -25,9 +25,10 @@ const char* const kEncodeHelp =
     "connectivity is coded losslessly. What the file carries besides is kept by\n"
     "default: vertex colours (exact), normals (to --normal-bits), texture\n"
     "coordinates per vertex or per corner (to --uv-bits), vertex and face quality,\n"
-    "face colours, OBJ materials and their .mtl file, texture file names. What\n"
-    "cannot be kept (custom PLY properties, per-face normals, ...) is named in a\n"
-    "note. OUT.drm is written completely or not at all.\n"
+    "face colours, OBJ materials and the statements of their .mtl file (read\n"
+    "only inside the OBJ's folder or below it), texture file names. What cannot\n"
+    "be kept (custom PLY properties, per-face normals, ...) is named in a note.\n"
+    "OUT.drm is written completely or not at all, and never over IN.\n"
     "\n"
     "With -o DIR, every input is compressed into DIR/NAME.drm (NAME: the input's\n"
     "name without its extension; DIR is created if missing). An input may be a\n"
@@ -107,6 +108,7 @@ struct EncodedFile {
 // alone: the only mesh this process encodes (not a batch's).
 EncodedFile encodeFile(const std::string& input, const std::string& output, drm::EncodeOptions options,
                        ProgressBar* bar, bool alone) {
+    drm::vcgio::refuseOverwritingInput(input, output);
     const drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
     if (alone) mapLargeBlocksApart(loaded.mesh.vertexCount());
     drm::Encoded encoded;

@@ -195,6 +195,14 @@ void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& by
     });
 }
 
+void refuseOverwritingInput(const std::string& input, const std::string& output) {
+    struct stat in, out;
+    if (::stat(input.c_str(), &in) != 0 || ::stat(output.c_str(), &out) != 0) return;
+    if (in.st_dev == out.st_dev && in.st_ino == out.st_ino)
+        throw Error(ErrorKind::InvalidInput, "cannot write " + output + ": it is the input " + input +
+                    (output == input ? "" : " (the same file)") + ", which would be replaced");
+}
+
 std::vector<uint8_t> readFileBytes(const std::string& path) {
     struct stat info;
     if (::stat(path.c_str(), &info) != 0) throw Error(ErrorKind::Io, "cannot read " + path + ": " + systemReason());

@@ -8,6 +8,7 @@
 #include "drm_vcg/vcg_mesh.h"
 #include "format_preflight.h"
 #include "loading_mesh.h"
+#include "mtl_library.h"
 #include "obj_reader.h"
 #include "stl_weld.h"
 
@@ -15,6 +16,7 @@
 #include <cctype>
 #include <cmath>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <new>
 #include <sys/stat.h>
@@ -226,28 +228,77 @@ std::string directoryOf(const std::string& path) {
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
 }
 
-// The .mtl file named by `mtllib`, beside the OBJ: its text goes into the
-// metadata ("obj.mtllib": the name as written, "obj.mtl": the text), its
-// map_Kd file names into the texture list, and each face gets its
-// material's texture when there are several.
+// Where the library `mtllib` names lies, if it is inside the OBJ's folder
+// or below it; otherwise "" with `why` set. A library elsewhere is never
+// read: an OBJ someone sends must not make drm copy other files (an
+// absolute path, "../", or a link leading out) into the .drm it writes.
+std::string libraryInsideFolder(const std::string& objPath, const std::string& mtllib, std::string& why) {
+    std::string name = mtllib;
+    std::replace(name.begin(), name.end(), '\\', '/');
+    const bool absolute = name[0] == '/' || (name.size() >= 2 && std::isalpha(static_cast<unsigned char>(name[0])) && name[1] == ':');
+    bool upward = false;
+    for (size_t from = 0; from <= name.size();) {
+        size_t to = name.find('/', from);
+        if (to == std::string::npos) to = name.size();
+        upward = upward || name.compare(from, to - from, "..") == 0;
+        from = to + 1;
+    }
+    if (absolute || upward) {
+        why = "it is outside the OBJ's folder";
+        return "";
+    }
+    const std::string path = directoryOf(objPath) + name;
+    char* folder = ::realpath(directoryOf(objPath).empty() ? "." : directoryOf(objPath).c_str(), nullptr);
+    char* library = ::realpath(path.c_str(), nullptr);
+    std::string folderText = folder ? folder : "", libraryText = library ? library : "";
+    std::free(folder);
+    std::free(library);
+    if (libraryText.empty()) {
+        why = "it is not beside the file (or unreadable)";
+        return "";
+    }
+    if (folderText != "/") folderText += "/";
+    if (libraryText.compare(0, folderText.size(), folderText) != 0) {
+        why = "it is a link to a file outside the OBJ's folder";
+        return "";
+    }
+    struct stat info;
+    if (::stat(libraryText.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) {
+        why = "it is not a regular file";
+        return "";
+    }
+    if (info.st_size > (64 << 20)) {
+        why = "it is over 64 MiB";
+        return "";
+    }
+    return libraryText;
+}
+
+// The .mtl file named by `mtllib`: the statements understood go into the
+// metadata ("obj.mtllib": the name as written, "obj.mtl": the statements,
+// see mtl_library.h), its map_Kd file names into the texture list, and each
+// face gets its material's texture when there are several.
 void addMaterialLibrary(const std::string& objPath, const std::string& mtllib, drm::Mesh& mesh,
                         std::vector<std::string>& notes) {
     if (mtllib.empty()) return;
     mesh.metadata.emplace_back("obj.mtllib", mtllib);
-    std::string name = mtllib;
-    std::replace(name.begin(), name.end(), '\\', '/');
-    const std::string mtlPath = (!name.empty() && name[0] == '/') ? name : directoryOf(objPath) + name;
-    struct stat info;
-    if (::stat(mtlPath.c_str(), &info) != 0 || !S_ISREG(info.st_mode) || info.st_size > (64 << 20)) {
-        notes.push_back("the material library " + mtllib + " is not beside the file (or unreadable): only its name is kept");
+    std::string why;
+    const std::string mtlPath = libraryInsideFolder(objPath, mtllib, why);
+    if (mtlPath.empty()) {
+        notes.push_back("the material library " + mtllib + " is not read (" + why + "): only its name is kept");
         return;
     }
     const std::vector<uint8_t> bytes = readFileBytes(mtlPath);
-    const std::string text(bytes.begin(), bytes.end());
-    mesh.metadata.emplace_back("obj.mtl", text);
-    const std::vector<std::pair<std::string, std::string>> textures = readMtlTextures(text);
+    const MtlLibrary parsed = readMtl(std::string(bytes.begin(), bytes.end()));
+    mesh.metadata.emplace_back("obj.mtl", parsed.text);
+    if (!parsed.dropped.empty()) {
+        std::vector<std::string> lines(parsed.dropped.begin(), parsed.dropped.begin() + long(std::min<size_t>(parsed.dropped.size(), 5)));
+        if (parsed.dropped.size() > 5) lines.push_back(std::to_string(parsed.dropped.size() - 5) + " more");
+        notes.push_back("the material library " + mtllib + "'s statements on " + joinList(lines) +
+                        " are not kept in .drm files");
+    }
     std::vector<uint32_t> textureOfMaterial(mesh.materials.size(), 0);
-    for (const auto& entry : textures) {
+    for (const auto& entry : parsed.textures) {
         size_t index = std::find(mesh.textures.begin(), mesh.textures.end(), entry.second) - mesh.textures.begin();
         if (index == mesh.textures.size()) mesh.textures.push_back(entry.second);
         for (size_t m = 0; m < mesh.materials.size(); ++m)
@@ -274,6 +325,9 @@ LoadedMesh loadObj(const std::string& path) {
     if (obj.verticesWithoutColour > 0)
         loaded.notes.push_back(std::to_string(obj.verticesWithoutColour) + " vertices have no colour: they get white");
     if (obj.coloursOver255) loaded.notes.push_back("vertex colours above 1 were read as 0..255, not 0..1");
+    if (obj.texCoordW) loaded.notes.push_back("the texture coordinates' third (w) component is not kept in .drm files");
+    if (obj.unusedTexCoords) loaded.notes.push_back("the file's texture coordinates (vt) are used by no face: they are not kept");
+    if (obj.unusedNormals) loaded.notes.push_back("the file's normals (vn) are used by no face: they are not kept");
     std::vector<std::string> dropped;
     if (obj.linesOrPoints) dropped.push_back("lines and points");
     addDroppedNote(loaded.notes, dropped);

@@ -1,6 +1,8 @@
 // readObj: see obj_reader.h for why drm does not use vcglib's OBJ reader.
 #include "obj_reader.h"
 
+#include "text_lines.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -90,12 +92,9 @@ ObjContents readObj(const std::string& text) {
 
     size_t position = 0, lineNumber = 0;
     auto nextLine = [&]() {
-        size_t end = text.find('\n', position);
-        if (end == std::string::npos) end = text.size();
-        std::string line = text.substr(position, end - position);
-        position = end + 1;
+        std::string line = takeLine(text, position);
         ++lineNumber;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
+        stripComment(line);
         return line;
     };
     while (position < text.size()) {
@@ -106,7 +105,7 @@ ObjContents readObj(const std::string& text) {
             if (position < text.size()) line += nextLine();
         }
         const std::vector<std::string> tokens = splitBlanks(line);
-        if (tokens.empty() || tokens[0][0] == '#') continue;
+        if (tokens.empty()) continue;
         const std::string where = "line " + std::to_string(lineNumber);
         const std::string& keyword = tokens[0];
 
@@ -115,11 +114,16 @@ ObjContents readObj(const std::string& text) {
             for (int k = 1; k <= 3; ++k) mesh.positions.push_back(parseCoordinate(tokens[size_t(k)], where));
             const bool coloured = tokens.size() >= 7;
             hasColour.push_back(coloured);
-            for (int k = 4; k <= 6; ++k) colours.push_back(coloured ? parseCoordinate(tokens[size_t(k)], where) : 1.0f);
+            for (int k = 4; k <= 6; ++k) {
+                colours.push_back(coloured ? parseCoordinate(tokens[size_t(k)], where) : 1.0f);
+                if (!std::isfinite(colours.back()))
+                    throw Error(ErrorKind::InvalidInput, where + ": the colour of vertex " + std::to_string(hasColour.size()) + " is not finite");
+            }
         } else if (keyword == "vt") {
             if (tokens.size() < 2) throw Error(ErrorKind::InvalidInput, where + ": a texture coordinate needs at least u");
             texCoords.push_back(parseCoordinate(tokens[1], where));
             texCoords.push_back(tokens.size() >= 3 ? parseCoordinate(tokens[2], where) : 0.0f);
+            if (tokens.size() >= 4 && parseCoordinate(tokens[3], where) != 0.0f) contents.texCoordW = true;
             if (!std::isfinite(texCoords[texCoords.size() - 2]) || !std::isfinite(texCoords.back()))
                 throw Error(ErrorKind::InvalidInput, where + ": texture coordinate " + std::to_string(texCoords.size() / 2) + " is not finite");
         } else if (keyword == "vn") {
@@ -131,15 +135,13 @@ ObjContents readObj(const std::string& text) {
         } else if (keyword == "usemtl") {
             // A material name may hold blanks: everything after the keyword.
             const size_t from = line.find_first_not_of(" \t", line.find("usemtl") + 6);
-            std::string name = from == std::string::npos ? "" : line.substr(from);
-            while (!name.empty() && (name.back() == ' ' || name.back() == '\t')) name.pop_back();
+            const std::string name = from == std::string::npos ? "" : line.substr(from);
             if (!anyMaterial && !faceMaterial.empty()) materialIndex("");  // faces before the first usemtl
             anyMaterial = true;
             currentMaterial = materialIndex(name);
         } else if (keyword == "mtllib") {
             const size_t from = line.find_first_not_of(" \t", line.find("mtllib") + 6);
-            std::string name = from == std::string::npos ? "" : line.substr(from);
-            while (!name.empty() && (name.back() == ' ' || name.back() == '\t')) name.pop_back();
+            const std::string name = from == std::string::npos ? "" : line.substr(from);
             if (contents.mtllib.empty()) contents.mtllib = name;
         } else if (keyword == "l" || keyword == "p") {
             contents.linesOrPoints = true;
@@ -225,6 +227,8 @@ ObjContents readObj(const std::string& text) {
         if (cornerTexCoord[c] >= 0) ++withTex;
         if (cornerNormal[c] >= 0) ++withNormal;
     }
+    contents.unusedTexCoords = withTex == 0 && !texCoords.empty();
+    contents.unusedNormals = withNormal == 0 && !normals.empty();
     if (withTex > 0) {
         contents.cornersWithoutTexCoord = cornerCount - withTex;
         mesh.cornerTexCoords.assign(2 * cornerCount, 0.0f);
@@ -260,29 +264,6 @@ ObjContents readObj(const std::string& text) {
     }
     if (anyMaterial) mesh.faceMaterial = std::move(faceMaterial);
     return contents;
-}
-
-std::vector<std::pair<std::string, std::string>> readMtlTextures(const std::string& text) {
-    std::vector<std::pair<std::string, std::string>> textures;
-    std::string material;
-    size_t position = 0;
-    while (position < text.size()) {
-        size_t end = text.find('\n', position);
-        if (end == std::string::npos) end = text.size();
-        std::string line = text.substr(position, end - position);
-        position = end + 1;
-        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
-        const std::vector<std::string> tokens = splitBlanks(line);
-        if (tokens.size() < 2) continue;
-        if (tokens[0] == "newmtl") {
-            material = line.substr(line.find_first_not_of(" \t", line.find("newmtl") + 6));
-        } else if (tokens[0] == "map_Kd") {
-            // Options (-blendu on, -s 1 1 1, ...) come before the file name,
-            // which is the last token.
-            textures.emplace_back(material, tokens.back());
-        }
-    }
-    return textures;
 }
 
 }  // namespace vcgio

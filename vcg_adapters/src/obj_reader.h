@@ -34,17 +34,18 @@ struct ObjContents {
     size_t cornersWithoutNormal = 0;    // likewise (given 0, 0, 0)
     size_t verticesWithoutColour = 0;   // in a file whose other vertices have one (given white)
     bool coloursOver255 = false;        // colours given as 0..255, not 0..1
+    bool texCoordW = false;             // some `vt` has a third (w) component other than 0
+    bool unusedTexCoords = false;       // `vt` lines that no face uses
+    bool unusedNormals = false;         // `vn` lines that no face uses
 };
 
 // Reads OBJ text: `v x y z [r g b]`, `vt u v [w]`, `vn x y z`, `usemtl`,
 // `mtllib`, `f a b c ...` with `a`, `a/t`, `a//n` or `a/t/n` corners
-// (1-based, or negative = relative to the last one read). Throws
+// (1-based, or negative = relative to the last one read). Lines end in LF,
+// CRLF or CR; a comment starts at a '#' at a line's start or after a blank
+// (text_lines.h). Names (usemtl, mtllib) are the rest of their line. Throws
 // drm::Error("line N: reason").
 ObjContents readObj(const std::string& text);
-
-// The texture file names (`map_Kd`) of each material of a .mtl file's text,
-// by material name; names are kept as written.
-std::vector<std::pair<std::string, std::string>> readMtlTextures(const std::string& text);
 
 }  // namespace vcgio
 }  // namespace drm

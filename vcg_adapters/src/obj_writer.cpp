@@ -4,6 +4,8 @@
 #include "drm_vcg/file_io.h"
 #include "drm_vcg/mesh_io.h"
 #include "mesh_checks.h"
+#include "mtl_library.h"
+#include "text_lines.h"
 
 #include <algorithm>
 #include <cctype>
@@ -82,6 +84,14 @@ struct GeneratedLibrary {
     std::vector<uint32_t> faceMaterial;      // per face, into materialNames
 };
 
+// Throws drm::Error("cannot write PATH: WHAT "NAME" cannot be written in
+// OBJ: reason") for a name that would change the file's structure.
+void refuseUnwritableName(const std::string& path, const std::string& what, const std::string& name) {
+    if (const char* reason = unwritableNameReason(name, true))
+        throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": " + what + " \"" + printableName(name) +
+                    "\" cannot be written in OBJ: " + reason);
+}
+
 GeneratedLibrary generateLibrary(const drm::Mesh& mesh) {
     GeneratedLibrary library;
     const size_t faces = mesh.faceCount();
@@ -124,30 +134,33 @@ std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh)
     std::vector<std::string> notes;
     const size_t vertices = mesh.vertexCount(), faces = mesh.faceCount();
 
-    // The material library: the one the mesh came with, or one made up for
-    // its textures.
+    // The material library: the statements the mesh came with, read again
+    // (mtl_library.h), or one made up for its textures; written as
+    // OUT.mtl beside OUT.obj whatever name the mesh stored, so a file
+    // names no path that decoding writes.
     bool haveText = false, haveName = false;
     const std::string keptText = metadataValue(mesh, "obj.mtl", &haveText);
-    std::string libraryName = baseName(metadataValue(mesh, "obj.mtllib", &haveName));
-    std::string libraryText = keptText;
+    const std::string keptName = metadataValue(mesh, "obj.mtllib", &haveName);
+    std::string libraryText = haveText ? readMtl(keptText).text : std::string();
     std::vector<std::string> materialNames = mesh.materials;
     std::vector<uint32_t> faceMaterial = mesh.faceMaterial;
     if (!haveText && !mesh.textures.empty()) {
+        for (const std::string& name : mesh.textures) refuseUnwritableName(path, "the texture file name", name);
         GeneratedLibrary generated = generateLibrary(mesh);
         libraryText = generated.text;
         materialNames = generated.materialNames;
         faceMaterial = generated.faceMaterial;
         haveText = true;
-        libraryName = stemOf(path) + ".mtl";
     }
-    if (haveText && libraryName.empty()) libraryName = stemOf(path) + ".mtl";
-    if (haveText && libraryName == baseName(path)) {
-        notes.push_back("the material library's name " + libraryName + " is the OBJ's own: it is not written");
-        haveText = false;
-    }
+    if (!haveText && haveName)
+        notes.push_back("the material library " + keptName + " was not in the .drm file: " + path + " names none");
+    const std::string libraryPath = objLibraryPath(path);
+    const std::string libraryName = baseName(libraryPath);
+    if (haveText) refuseUnwritableName(path, "the material library's name", libraryName);
+    for (const std::string& name : materialNames) refuseUnwritableName(path, "the material name", name);
 
     std::string out = "# written by drm " + std::string(drm::version()) + "\n";
-    if (!libraryName.empty() && (haveText || haveName)) out += "mtllib " + libraryName + "\n";
+    if (haveText) out += "mtllib " + libraryName + "\n";
     const bool withColours = !mesh.colors.empty();
     for (size_t i = 0; i < vertices; ++i) {
         out += "v";
@@ -211,7 +224,6 @@ std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh)
 
     // The library first: if it cannot be written, the OBJ is not either.
     if (haveText) {
-        const std::string libraryPath = folderOf(path) + libraryName;
         if (!fileHoldsText(libraryPath, libraryText))
             writeFileAtomically(libraryPath, std::vector<uint8_t>(libraryText.begin(), libraryText.end()));
     }
@@ -231,6 +243,8 @@ std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh)
         notes.push_back("the per-vertex normals are not in " + path + " (the per-corner ones are)");
     return notes;
 }
+
+std::string objLibraryPath(const std::string& objPath) { return folderOf(objPath) + stemOf(objPath) + ".mtl"; }
 
 std::vector<std::string> saveMesh(const std::string& path, const drm::Mesh& mesh) {
     std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();

@@ -4,6 +4,7 @@
 #include "drm_vcg/file_io.h"
 #include "drm_vcg/mesh_io.h"
 #include "mesh_checks.h"
+#include "text_lines.h"
 
 #include <cstdint>
 #include <cstring>
@@ -58,13 +59,13 @@ void checkFaceAttributes(const std::string& path, const drm::Mesh& mesh, const F
                     " quality values for " + std::to_string(faces) + " faces");
 }
 
-// PLY comments end at the line's end, and vcglib drops blanks from texture
-// names: a name with either would not come back.
-std::string textureComment(const std::string& name) {
-    std::string clean;
-    for (char c : name)
-        if (c != '\n' && c != '\r') clean.push_back(c);
-    return "comment TextureFile " + clean + "\n";
+// `comment TextureFile NAME`: readers take the rest of the line as the
+// name, so a name that would end the line early or lose blanks is refused.
+std::string textureComment(const std::string& path, const std::string& name) {
+    if (const char* reason = unwritableNameReason(name, false))
+        throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": the texture file name \"" + printableName(name) +
+                    "\" cannot be written in PLY: " + reason);
+    return "comment TextureFile " + name + "\n";
 }
 
 }  // namespace
@@ -85,7 +86,7 @@ std::vector<std::string> savePly(const std::string& path, const drm::Mesh& mesh,
 
     std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by drm " +
                          std::string(drm::version()) + "\n";
-    for (const std::string& texture : mesh.textures) header += textureComment(texture);
+    for (const std::string& texture : mesh.textures) header += textureComment(path, texture);
     header += "element vertex " + std::to_string(mesh.vertexCount()) + "\n";
     header += "property float x\nproperty float y\nproperty float z\n";
     if (withNormals) header += "property float nx\nproperty float ny\nproperty float nz\n";

@@ -32,6 +32,12 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 
 void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& bytes);
 
+// Throws drm::Error("cannot write OUTPUT: it is the input INPUT") when
+// `output` names the same file as `input` (the same path, a link to it or a
+// hard link): writing there would replace the input. Paths that do not
+// exist yet name no input.
+void refuseOverwritingInput(const std::string& input, const std::string& output);
+
 // Reads a whole file. Throws drm::Error("cannot read PATH: reason").
 std::vector<uint8_t> readFileBytes(const std::string& path);
 

@@ -55,14 +55,21 @@ std::vector<std::string> savePly(const std::string& path, const drm::Mesh& mesh,
 
 // Writes Wavefront OBJ: `v x y z [r g b]`, `vt` (per corner, or per vertex),
 // `vn` (per vertex, or per corner), `f v/t/n`, `mtllib` and `usemtl` groups
-// when the mesh has materials. The material library kept in the metadata
-// ("obj.mtllib", "obj.mtl") is written beside the OBJ under its own file
-// name (its folder part dropped); a mesh with textures but no library gets
-// one named after the OBJ (NAME.mtl, one material per texture). An existing
-// library with the same text is left alone; otherwise it is replaced, as
-// atomically as the OBJ. Returns what OBJ cannot hold (alpha, quality, face
+// when the mesh has materials. The material library (the statements kept
+// in the metadata "obj.mtl", read again as an .mtl file is, or, for a mesh
+// with textures but none, one material per texture) is written to
+// objLibraryPath(path) and the `mtllib` line names it: no other file is
+// written, whatever names the mesh holds. An existing library with the same
+// text is left alone; otherwise it is replaced, as atomically as the OBJ.
+// A material, texture or library name that OBJ cannot hold as written (a
+// line break, blanks at its ends, a '#' after a blank) is refused before
+// anything is written. Returns what OBJ cannot hold (alpha, quality, face
 // colours), as notes. Throws drm::Error.
 std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh);
+
+// The material library saveObj writes for an OBJ: the same folder and name
+// with the extension .mtl (out.obj: out.mtl).
+std::string objLibraryPath(const std::string& objPath);
 
 // savePly or saveObj by the extension of `path` (.ply or .obj, any case);
 // throws drm::Error for any other.

@@ -1,0 +1,33 @@
+// Lines and comments of line-based text formats (OBJ, MTL).
+#ifndef DRM_VCG_TEXT_LINES_H
+#define DRM_VCG_TEXT_LINES_H
+
+#include <cstddef>
+#include <string>
+
+namespace drm {
+namespace vcgio {
+
+// The line that starts at `position`, without its ending (LF, CRLF or a lone
+// CR, as old Mac tools write), and moves `position` past that ending.
+std::string takeLine(const std::string& text, size_t& position);
+
+// Cuts a statement's comment off, from a '#' that starts the line or follows
+// a blank ("usemtl red # shiny" is the material "red"; "tex#1.png" keeps its
+// '#'), then the blanks at both ends.
+void stripComment(std::string& line);
+
+// Why a name (material, texture or library file) cannot be written as the
+// rest of a line and be read back the same, or nullptr if it can: a control
+// character would end or bend the line and blanks at either end are trimmed
+// by readers; in OBJ and MTL (hashStartsComment) a '#' at the start or after
+// a blank starts a comment.
+const char* unwritableNameReason(const std::string& name, bool hashStartsComment);
+
+// The name for a message: control characters as \n, \r, \t or \xNN.
+std::string printableName(const std::string& name);
+
+}  // namespace vcgio
+}  // namespace drm
+
+#endif  // DRM_VCG_TEXT_LINES_H
