@@ -301,4 +301,35 @@ TEST(LoadMesh, ErrorsNameTheFileAndTheReason) {
     }
 }
 
+// Every solid of an ASCII STL is read (CAD tools write one per part).
+TEST(LoadMesh, AsciiStlReadsEverySolid) {
+    ScratchDir dir;
+    const std::string facet = "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n endloop\nendfacet\n";
+    const std::string moved = "FACET NORMAL 0 0 1\r OUTER LOOP\r  VERTEX 3 3 0\r  VERTEX 2 3 0\r  VERTEX 0 2 0\r ENDLOOP\rENDFACET\r";
+    writeText(dir.file("two.stl"), "solid a\n" + facet + "endsolid a\nsolid empty\nendsolid\nSOLID b\r" + moved + "ENDSOLID b\r");
+    const drm::vcgio::LoadedMesh loaded = loadMesh(dir.file("two.stl"));
+    EXPECT_EQ(loaded.mesh.positions, (std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 3, 3, 0, 2, 3, 0, 0, 2, 0}));
+    EXPECT_EQ(loaded.mesh.triangles, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
+    EXPECT_TRUE(hasNoteContaining(loaded, "3 solids are read as one mesh"));
+    EXPECT_TRUE(hasNoteContaining(loaded, "facets' normals"));
+}
+
+TEST(LoadMesh, AsciiStlThatIsNotWholeIsRefused) {
+    ScratchDir dir;
+    const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"solid a\n" + facet, "the file ends inside a solid"},
+        {"solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", "the file ends inside facet 0"},
+        {"solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 1 1 0\nendloop\nendfacet\nendsolid\n",
+         "line 9: facet 0 has 4 vertices"},
+        {"solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 zero\n", "line 4: 'zero' is not a number"},
+        {"solid a\nvertex 0 0 0\n", "line 2: 'vertex' outside a facet's outer loop"},
+    };
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const std::string name = dir.file("bad" + std::to_string(i) + ".stl");
+        writeText(name, cases[i].first);
+        EXPECT_NE(errorOf(name).find(cases[i].second), std::string::npos) << errorOf(name);
+    }
+}
+
 }  // namespace

@@ -49,7 +49,8 @@ int64_t preflightPly(const std::vector<uint8_t>& bytes, std::vector<std::string>
 
 // Binary STL must be exactly 84 + 50 * triangle count bytes long; anything
 // else must be plain ASCII text starting with "solid" and holding a newline.
-void preflightStl(const std::vector<uint8_t>& bytes);
+// Returns true for binary STL.
+bool preflightStl(const std::vector<uint8_t>& bytes);
 
 }  // namespace vcgio
 }  // namespace drm

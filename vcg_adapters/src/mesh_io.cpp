@@ -10,6 +10,7 @@
 #include "loading_mesh.h"
 #include "mtl_library.h"
 #include "obj_reader.h"
+#include "stl_ascii_reader.h"
 #include "stl_weld.h"
 
 #include <algorithm>
@@ -204,22 +205,40 @@ LoadedMesh loadOff(const std::string& path) {
     return loaded;
 }
 
+void addWeldNote(std::vector<std::string>& notes, const drm::Mesh& soup, const drm::Mesh& welded) {
+    notes.push_back("STL has no shared vertices: its " + std::to_string(soup.vertexCount()) +
+                    " triangle corners were welded into " + std::to_string(welded.vertexCount()) +
+                    " vertices at identical positions");
+}
+
+// ASCII STL through stl_ascii_reader.h (every solid); binary STL through
+// vcglib, which also reads the face colours some tools put in a facet's
+// attribute bytes.
 LoadedMesh loadStl(const std::string& path) {
-    preflightStl(readFileBytes(path));
+    LoadedMesh loaded;
+    const std::vector<uint8_t> bytes = readFileBytes(path);
+    if (!preflightStl(bytes)) {
+        const AsciiStl stl = readAsciiStl(std::string(bytes.begin(), bytes.end()));
+        loaded.mesh = weldIdenticalPositions(stl.soup);
+        addWeldNote(loaded.notes, stl.soup, loaded.mesh);
+        if (stl.solids > 1)
+            loaded.notes.push_back("the file's " + std::to_string(stl.solids) + " solids are read as one mesh");
+        if (stl.soup.faceCount() > 0) loaded.notes.push_back("the facets' normals are not kept in .drm files");
+        else loaded.notes.push_back("the file has no faces");
+        return loaded;
+    }
     LoadingMesh m;
     int mask = 0;
     const int status = vcg::tri::io::ImporterSTL<LoadingMesh>::Open(m, path.c_str(), mask);
     if (status != 0) throw Error(ErrorKind::InvalidInput, vcg::tri::io::ImporterSTL<LoadingMesh>::ErrorMsg(status));
-    LoadedMesh loaded;
     const drm::Mesh soup = fromVcg(m);
     loaded.mesh = weldIdenticalPositions(soup);
     // Welding changes the vertices, not the faces: face colours stay.
     attributesFromVcg(m, mask & Mask::IOM_FACECOLOR, loaded.mesh);
     loaded.mesh.textures.clear();
-    loaded.notes.push_back("STL has no shared vertices: its " + std::to_string(soup.vertexCount()) +
-                           " triangle corners were welded into " + std::to_string(loaded.mesh.vertexCount()) +
-                           " vertices at identical positions");
-    addDroppedNote(loaded.notes, droppedAttributes(mask & ~Mask::IOM_FACECOLOR, m));
+    addWeldNote(loaded.notes, soup, loaded.mesh);
+    if (soup.faceCount() > 0) loaded.notes.push_back("the facets' normals are not kept in .drm files");
+    addDroppedNote(loaded.notes, droppedAttributes(mask & ~(Mask::IOM_FACECOLOR | Mask::IOM_FACENORMAL), m));
     return loaded;
 }
 

@@ -8,13 +8,13 @@
 namespace drm {
 namespace vcgio {
 
-void preflightStl(const std::vector<uint8_t>& bytes) {
+bool preflightStl(const std::vector<uint8_t>& bytes) {
     // vcglib calls a file binary exactly when its size matches the triangle
     // count in bytes 80..83, so an exact match is all a binary file needs.
     if (bytes.size() >= 84) {
         const uint64_t triangles = uint64_t(bytes[80]) | uint64_t(bytes[81]) << 8 |
                                    uint64_t(bytes[82]) << 16 | uint64_t(bytes[83]) << 24;
-        if (84 + 50 * triangles == bytes.size()) return;
+        if (84 + 50 * triangles == bytes.size()) return true;
     }
     const bool plainText = std::all_of(bytes.begin(), bytes.end(), [](uint8_t b) {
         return b >= 32 ? b < 127 : (b == '\n' || b == '\r' || b == '\t' || b == '\f' || b == '\v');
@@ -30,6 +30,7 @@ void preflightStl(const std::vector<uint8_t>& bytes) {
         throw Error(ErrorKind::InvalidInput, "not an STL file: ASCII STL starts with \"solid\"");
     if (std::find(bytes.begin() + start, bytes.end(), uint8_t('\n')) == bytes.end())
         throw Error(ErrorKind::InvalidInput, "not an STL file: ASCII STL without a single line break");
+    return false;
 }
 
 }  // namespace vcgio
