@@ -88,7 +88,17 @@ Decoded decode(const uint8_t* data, size_t size, const DecodeOptions& options) {
     if (options.threads < 0)
         throw Error(ErrorKind::InvalidInput, "threads " + std::to_string(options.threads) + " is negative (0: as the machine allows)");
     FileParts parts;
-    return decodeCore(data, size, options, &parts);
+    try {
+        return decodeCore(data, size, options, &parts);
+    } catch (const Error& e) {
+        // Every refusal of a damaged file reads the same way, whichever
+        // stage found the damage.
+        const std::string message = e.what();
+        const auto startsWith = [&message](const std::string& prefix) { return message.compare(0, prefix.size(), prefix) == 0; };
+        const bool named = startsWith("corrupt file:") || startsWith("not a .drm file") || startsWith("empty file");
+        if (e.kind() != ErrorKind::Corrupt || named) throw;
+        throw Error(ErrorKind::Corrupt, "corrupt file: " + message);
+    }
 }
 
 }  // namespace drm

@@ -68,6 +68,9 @@ bool Verdicts::judgeError(const Outcome& o, const std::string& label, const drm:
     else if (expected && o.kind != *expected)
         fail(label, std::string("decode threw an error of kind ") + drm::errorKindName(o.kind) + ", not " +
                         drm::errorKindName(*expected) + ": \"" + o.message + "\"");
+    else if (o.kind == drm::ErrorKind::Corrupt && o.message.rfind("corrupt file: ", 0) != 0 &&
+             o.message.rfind("not a .drm file", 0) != 0 && o.message.rfind("empty file", 0) != 0)
+        fail(label, "a damaged file's message does not say so first: \"" + o.message + "\"");
     return true;
 }
 
