@@ -2,9 +2,11 @@
 #include "batch.h"
 #include "cli.h"
 #include "commands.h"
+#include "file_census.h"
 #include "lossless_check.h"
 #include "mesh_input.h"
 
+#include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
 
 #include <cstdio>
@@ -25,7 +27,10 @@ const char* const kVerifyHelp =
     "corner and face by face: colours, quality, face colours, materials and\n"
     "names exactly, normals within the angle --normal-bits allows (0.2 degrees\n"
     "at 10 bits), texture coordinates within half a --uv-bits step of their\n"
-    "range. Exits with 0 only when the round trip is lossless.\n"
+    "range. The mesh as read is first checked against a separate count of the\n"
+    "vertices and triangles the file itself describes, so a reader that drops\n"
+    "part of a file is not reported lossless. Exits with 0 only when the round\n"
+    "trip is lossless.\n"
     "Options as for 'drm encode'.\n"
     "\n"
     "Several inputs, or a folder (its .ply, .obj, .off and .stl files, in name\n"
@@ -47,6 +52,10 @@ struct VerifiedFile {
 // Throws drm::Error naming the input unless the round trip is lossless.
 VerifiedFile verifyFile(const std::string& input, drm::EncodeOptions options, ProgressBar* bar) {
     const drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
+    const std::string readerLoss = censusMismatch(takeCensus(input, drm::vcgio::readFileBytes(input)),
+                                                  loaded.mesh.vertexCount(), loaded.mesh.faceCount());
+    if (!readerLoss.empty())
+        throw drm::Error(drm::ErrorKind::InvalidInput, input + " is not read whole: " + readerLoss);
     if (bar) bar->setLabel("encoding " + fileName(input));
     if (bar) options.progress = bar->callback();
     drm::Encoded encoded;
