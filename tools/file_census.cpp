@@ -224,6 +224,7 @@ FileCensus plyCensus(const std::vector<uint8_t>& bytes) {
             census.vertices = element.count;
             census.vertexCountKnown = true;
         }
+        if (element.properties.empty()) continue;  // items of nothing: no bytes to walk
         for (uint64_t item = 0; item < element.count; ++item)
             for (const PlyProperty& property : element.properties) {
                 uint64_t entries = 1;
