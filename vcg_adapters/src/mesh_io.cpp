@@ -1,6 +1,7 @@
-// loadMesh: PLY, OFF and STL through vcglib's importers, OBJ through
-// obj_reader.cpp (vcglib's drops faces, see obj_reader.h). Every path keeps
-// vertex order, face order and corner order as in the file.
+// loadMesh: PLY through ply_reader.cpp (vcglib's misreads many valid
+// files), OFF and STL through vcglib's importers, OBJ through
+// obj_reader.cpp (vcglib's drops faces, see obj_reader.h). Every path
+// keeps vertex order, face order and corner order as in the file.
 #include "drm_vcg/mesh_io.h"
 
 #include "drm_vcg/file_io.h"
@@ -10,6 +11,7 @@
 #include "loading_mesh.h"
 #include "mtl_library.h"
 #include "obj_reader.h"
+#include "ply_reader.h"
 #include "stl_ascii_reader.h"
 #include "stl_weld.h"
 
@@ -23,7 +25,6 @@
 #include <sys/stat.h>
 
 #include <wrap/io_trimesh/import_off.h>
-#include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
 namespace drm {
@@ -71,32 +72,15 @@ std::vector<std::string> droppedAttributes(int mask, const LoadingMesh& m) {
     return dropped;
 }
 
-// The PLY properties vcglib's importer reads into something a drm::Mesh
-// holds (or drops with a note of its own); anything else is named.
-bool knownPlyProperty(const std::string& property) {
-    static const char* const known[] = {
-        "vertex.x", "vertex.y", "vertex.z", "vertex.nx", "vertex.ny", "vertex.nz", "vertex.red", "vertex.green",
-        "vertex.blue", "vertex.alpha", "vertex.diffuse_red", "vertex.diffuse_green", "vertex.diffuse_blue",
-        "vertex.diffuse_alpha", "vertex.quality", "vertex.confidence", "vertex.radius", "vertex.texture_u",
-        "vertex.texture_v", "vertex.s", "vertex.t", "vertex.flags", "face.vertex_indices", "face.vertex_index",
-        "face.texcoord", "face.texnumber", "face.red", "face.green", "face.blue", "face.alpha", "face.quality",
-        "face.nx", "face.ny", "face.nz", "face.flags", "face.color"};
-    for (const char* name : known)
-        if (property == name) return true;
-    return false;
-}
-
-void addCustomPropertyNote(std::vector<std::string>& notes, const std::vector<std::string>& properties) {
-    std::vector<std::string> custom;
-    for (const std::string& property : properties)
-        if (!knownPlyProperty(property) && property.compare(0, 7, "vertex.") == 0) custom.push_back(property);
-        else if (!knownPlyProperty(property) && property.compare(0, 5, "face.") == 0) custom.push_back(property);
-    if (custom.size() > 6) {
-        const size_t more = custom.size() - 5;
-        custom.resize(5);
-        custom.push_back(std::to_string(more) + " more");
+// "the file's PLY properties a, b and c are not kept in .drm files",
+// naming at most six.
+void addNamesNote(std::vector<std::string>& notes, const char* what, std::vector<std::string> names) {
+    if (names.size() > 6) {
+        const size_t more = names.size() - 5;
+        names.resize(5);
+        names.push_back(std::to_string(more) + " more");
     }
-    if (!custom.empty()) notes.push_back("the file's PLY properties " + joinList(custom) + " are not kept in .drm files");
+    if (!names.empty()) notes.push_back("the file's " + std::string(what) + " " + joinList(names) + " are not kept in .drm files");
 }
 
 // NaN or infinite normals and texture coordinates cannot be quantized; the
@@ -149,45 +133,19 @@ void checkTriangleCount(uint64_t expected, const drm::Mesh& mesh) {
                     " triangles the file describes (unsupported property types?)");
 }
 
-// A little-endian 32-bit word at p, on any host.
-uint32_t word(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
-
-// PlainPly's body, already walked by the preflight (every face a triangle
-// of existing vertices): what vcglib's reader makes of it, without it.
-LoadedMesh readPlainPly(const std::vector<uint8_t>& bytes, const PlainPly& plain) {
-    LoadedMesh loaded;
-    drm::Mesh& mesh = loaded.mesh;
-    mesh.positions.resize(3 * plain.vertexCount);
-    const uint8_t* at = bytes.data() + plain.vertexStart;
-    for (size_t i = 0; i < mesh.positions.size(); ++i, at += 4) {
-        const uint32_t bits = word(at);
-        std::memcpy(&mesh.positions[i], &bits, 4);
-    }
-    mesh.triangles.resize(3 * plain.faceCount);
-    at = bytes.data() + plain.faceStart;
-    for (size_t f = 0; f < plain.faceCount; ++f, at += 13)
-        for (int k = 0; k < 3; ++k) mesh.triangles[3 * f + size_t(k)] = word(at + 1 + 4 * k);
-    return loaded;
-}
-
 LoadedMesh loadPly(const std::string& path) {
-    std::vector<std::string> properties;
-    PlainPly plain;
-    int64_t expectedTriangles = 0;
+    PlyContents ply;
     {
         const std::vector<uint8_t> bytes = readFileBytes(path);
-        expectedTriangles = preflightPly(bytes, &properties, &plain);
-        if (plain.plain && plain.faceCount > 0) return readPlainPly(bytes, plain);
+        ply = readPly(bytes.data(), bytes.size());
     }
-    LoadingMesh m;
-    int mask = 0;
-    const int status = vcg::tri::io::ImporterPLY<LoadingMesh>::Open(m, path.c_str(), mask);
-    if (status == vcg::tri::io::PlyInfo::E_SHORTFILE) throw Error(ErrorKind::InvalidInput, "the file ends early (truncated?)");
-    if (vcg::tri::io::ImporterPLY<LoadingMesh>::ErrorCritical(status))
-        throw Error(ErrorKind::InvalidInput, vcg::tri::io::ImporterPLY<LoadingMesh>::ErrorMsg(status));
-    LoadedMesh loaded = fromLoadingMesh(m, mask);
-    addCustomPropertyNote(loaded.notes, properties);
-    if (expectedTriangles >= 0) checkTriangleCount(uint64_t(expectedTriangles), loaded.mesh);
+    LoadedMesh loaded;
+    loaded.mesh = std::move(ply.mesh);
+    addPolygonNote(loaded.notes, ply.trianglesFromPolygons, loaded.mesh.faceCount());
+    loaded.notes.insert(loaded.notes.end(), ply.conversions.begin(), ply.conversions.end());
+    addDroppedNote(loaded.notes, ply.dropped);
+    addNamesNote(loaded.notes, "PLY properties", ply.otherProperties);
+    addNamesNote(loaded.notes, "PLY elements", ply.otherElements);
     if (loaded.mesh.faceCount() == 0) loaded.notes.push_back("the file has no faces");
     return loaded;
 }

@@ -1,4 +1,5 @@
-// Reading meshes through vcglib's importers, and writing binary PLY.
+// Reading meshes (PLY with drm's own reader, not vcglib's; mesh_io.cpp says
+// how each format is read), and writing binary PLY and OBJ.
 //
 // The codec keeps vertex order, face order and face orientation, so the
 // reader must too: nothing is cleaned, merged, reordered or reoriented.
