@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstdlib>
 #include <string>
 
@@ -236,6 +237,11 @@ FileCensus plyCensus(const std::vector<uint8_t>& bytes) {
             }
     }
     exactly(census, triangles);
+    // Triangle strips and range grids make triangles this scan does not
+    // count: any number from the faces' up is possible.
+    for (const PlyElement& element : elements)
+        if ((element.name == "tristrips" || element.name == "range_grid") && element.count > 0)
+            census.maxTriangles = UINT64_MAX;
     return census;
 }
 

@@ -24,7 +24,8 @@ struct FileCensus {
 
 // Counts by the file's extension (.ply, .obj, .off, .stl, any case):
 // PLY: the header's vertex count and the corners of each face's
-// vertex_indices list, found by walking every element's list counts; OBJ:
+// vertex_indices list, found by walking every element's list counts (a file
+// with tristrips or a range_grid: at least the faces' triangles); OBJ:
 // `v` statements and
 // the corners of `f` statements; OFF: the header's vertex count and each
 // face's corner count; STL: facets (binary: the header's count; ASCII:

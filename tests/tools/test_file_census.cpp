@@ -77,6 +77,17 @@ TEST(FileCensus, PlyWalksEveryListAsciiAndBothEndians) {
     }
 }
 
+TEST(FileCensus, PlyTriangleStripsLeaveTheTrianglesOpen) {
+    const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                            "element tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2 3\n";
+    const FileCensus census = takeCensus("m.ply", bytesOf(ply));
+    ASSERT_TRUE(census.known);
+    EXPECT_EQ(census.vertices, 4u);
+    EXPECT_EQ(census.minTriangles, 0u);
+    EXPECT_EQ(censusMismatch(census, 4, 2), "");
+}
+
 TEST(FileCensus, MismatchNamesWhatTheReaderLost) {
     FileCensus census;
     census.known = census.vertexCountKnown = true;
