@@ -228,6 +228,19 @@ TEST(ObjReader, TrailingCommentsAndCrOnlyLines) {
     EXPECT_EQ(mesh.materials, std::vector<std::string>{"red"});
 }
 
+TEST(ObjReader, ByteOrderMarks) {
+    ScratchDir dir;
+    writeText(dir.file("utf8.obj"), std::string("\xEF\xBB\xBF") + "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_EQ(loadMesh(dir.file("utf8.obj")).mesh.faceCount(), 1u);
+    writeText(dir.file("utf16.obj"), std::string("\xFE\xFF\0v\0 \0" "0", 7));
+    try {
+        loadMesh(dir.file("utf16.obj"));
+        FAIL() << "UTF-16 text was read";
+    } catch (const drm::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("UTF-16"), std::string::npos) << e.what();
+    }
+}
+
 TEST(ObjReader, ANonFiniteColourIsRefused) {
     ScratchDir dir;
     writeText(dir.file("m.obj"), "v 0 0 0 1 0 0\nv 1 0 0 nan 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n");

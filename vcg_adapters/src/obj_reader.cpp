@@ -73,6 +73,10 @@ uint8_t colourByte(float value, float scale) {
 }  // namespace
 
 ObjContents readObj(const std::string& text) {
+    // A byte order mark: UTF-8's is skipped; UTF-16 text is not OBJ as
+    // drm reads it (every other byte would be a NUL).
+    if (text.compare(0, 2, "\xFE\xFF") == 0 || text.compare(0, 2, "\xFF\xFE") == 0)
+        throw Error(ErrorKind::InvalidInput, "the file is UTF-16 text: save it as UTF-8 or ASCII");
     ObjContents contents;
     drm::Mesh& mesh = contents.mesh;
     struct PendingCheck { long index; size_t line; const char* what; };
@@ -90,7 +94,7 @@ ObjContents readObj(const std::string& text) {
         return uint32_t(mesh.materials.size() - 1);
     };
 
-    size_t position = 0, lineNumber = 0;
+    size_t position = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0, lineNumber = 0;
     auto nextLine = [&]() {
         std::string line = takeLine(text, position);
         ++lineNumber;

@@ -43,7 +43,8 @@ struct ObjContents {
 // `mtllib`, `f a b c ...` with `a`, `a/t`, `a//n` or `a/t/n` corners
 // (1-based, or negative = relative to the last one read). Lines end in LF,
 // CRLF or CR; a comment starts at a '#' at a line's start or after a blank
-// (text_lines.h). Names (usemtl, mtllib) are the rest of their line. Throws
+// (text_lines.h). Names (usemtl, mtllib) are the rest of their line. A
+// UTF-8 byte order mark is skipped; UTF-16 text is refused. Throws
 // drm::Error("line N: reason").
 ObjContents readObj(const std::string& text);
 
