@@ -16,6 +16,7 @@ packages=(
   xvfb xauth dpkg-dev imagemagick xdotool x11-apps
   qt5-image-formats-plugins   # MeshLab reads TGA, TIFF and WebP textures (duck.obj's duckCM.tga)
   util-linux   # setpriv: the file-permission tests run as the user nobody
+  assimp-testmodels   # tests/others_files: another project's test models, broken ones included
   clang libfuzzer-14-dev libclang-rt-14-dev
   libdraco-dev draco libmeshoptimizer-dev libopenctm-dev libzstd-dev   # drm-peer-bench only
   python3-matplotlib python3-numpy   # tools/bench/make_plots.py, make_big_mesh.py, measure_scale.py
