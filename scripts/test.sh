@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a Debian bookworm machine, builds everything and runs the whole test
 # suite, then a bounded libFuzzer run over the decoder and over encode-decode
-# round trips (AddressSanitizer and UBSan builds with clang, in build-fuzz/;
+# round trips and over the mesh file readers (AddressSanitizer and UBSan
+# builds with clang, in build-fuzz/;
 # DRM_SKIP_FUZZ=1 leaves it out). This is what CI runs.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -28,4 +29,5 @@ fuzz() {
 if [ "${DRM_SKIP_FUZZ:-0}" != 1 ]; then
   fuzz decoder -runs=20000
   fuzz round-trip --roundtrip -runs=20000
+  fuzz readers --readers -runs=20000
 fi
