@@ -217,6 +217,16 @@ TEST(ObjWriter, KeepsNamesWithBlanksBracesTildesAndUtf8) {
     EXPECT_EQ(back.textures, std::vector<std::string>{"PROGRA~1/tex {1}é.png"});
 }
 
+TEST(ObjWriter, NamesThePointNormalsItCannotHold) {
+    ScratchDir dir;
+    drm::Mesh points;
+    points.positions = {0, 0, 0, 1, 0, 0};
+    points.normals = {0, 0, 1, 0, 1, 0};
+    const std::vector<std::string> notes = drm::vcgio::saveObj(dir.file("p.obj"), points);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_NE(notes[0].find("the vertices' normals are not in"), std::string::npos) << notes[0];
+}
+
 // --- OBJ statements as other tools write them ---
 
 TEST(ObjReader, TrailingCommentsAndCrOnlyLines) {

@@ -234,6 +234,11 @@ std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh)
         for (size_t i = 0; i < vertices; ++i) opaque = opaque && mesh.colors[4 * i + 3] == 255;
         if (!opaque) notes.push_back("OBJ holds no colour alpha: it is not in " + path + " (write .ply)");
     }
+    // OBJ gives normals and texture coordinates to face corners only.
+    if (faces == 0 && !mesh.normals.empty())
+        notes.push_back("OBJ holds normals only for face corners: the vertices' normals are not in " + path + " (write .ply)");
+    if (faces == 0 && !mesh.texCoords.empty())
+        notes.push_back("OBJ holds texture coordinates only for face corners: the vertices' are not in " + path + " (write .ply)");
     if (!mesh.quality.empty()) notes.push_back("OBJ holds no vertex quality: it is not in " + path + " (write .ply)");
     if (!mesh.faceColors.empty()) notes.push_back("OBJ holds no face colours: they are not in " + path + " (write .ply)");
     if (!mesh.faceQuality.empty()) notes.push_back("OBJ holds no face quality: it is not in " + path + " (write .ply)");
