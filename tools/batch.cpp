@@ -1,6 +1,8 @@
 // Many files on every core (see batch.h).
 #include "batch.h"
 
+#include <drm_vcg/mesh_io.h>
+
 #include <drm/drm.h>
 
 #include <algorithm>
@@ -11,6 +13,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <set>
+#include <sys/stat.h>
 #include <mutex>
 #include <new>
 #include <numeric>
@@ -95,6 +99,22 @@ std::vector<std::string> outputPaths(const std::vector<std::string>& inputs, con
             throw drm::Error(drm::ErrorKind::InvalidInput, "two inputs would both be written to " + output + ": " + it->second + " and " + input +
                              " (nothing written)");
         outputs.push_back(output);
+    }
+    // No output may be any input (a link or hard link to another input
+    // counts), nor, for OBJ, its library: writing there would replace it.
+    std::set<std::pair<dev_t, ino_t>> inputFiles;
+    for (const std::string& input : inputs) {
+        struct stat info;
+        if (::stat(input.c_str(), &info) == 0) inputFiles.emplace(info.st_dev, info.st_ino);
+    }
+    for (const std::string& output : outputs) {
+        std::vector<std::string> written = {output};
+        if (extension == ".obj") written.push_back(drm::vcgio::objLibraryPath(output));
+        for (const std::string& path : written) {
+            struct stat info;
+            if (::stat(path.c_str(), &info) == 0 && inputFiles.count({info.st_dev, info.st_ino}))
+                throw drm::Error(drm::ErrorKind::InvalidInput, "cannot write " + path + ": it is one of the inputs, which would be replaced (nothing written)");
+        }
     }
     fs::create_directories(dir, error);
     if (error) throw drm::Error(drm::ErrorKind::Io, "cannot create the folder " + dir + ": " + error.message());

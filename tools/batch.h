@@ -40,8 +40,9 @@ std::vector<std::string> collectInputs(const std::vector<std::string>& paths,
                                        const std::function<bool(const std::string&)>& wanted, const std::string& kinds);
 
 // DIR/STEM.EXTENSION for every input, DIR created if missing. Throws
-// drm::Error if DIR is not a folder, or if two inputs would write the same
-// output (a/bunny.ply and b/bunny.obj): nothing is written then.
+// drm::Error if DIR is not a folder, if two inputs would write the same
+// output (a/bunny.ply and b/bunny.obj), or if an output (or, for .obj, its
+// .mtl) is one of the inputs, through links too: nothing is written then.
 std::vector<std::string> outputPaths(const std::vector<std::string>& inputs, const std::string& dir,
                                      const std::string& extension);
 

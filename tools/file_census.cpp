@@ -64,20 +64,30 @@ FileCensus objCensus(const std::string& text) {
     FileCensus census;
     uint64_t vertices = 0, triangles = 0;
     std::string statement;
-    for (const std::string& line : linesOf(text)) {
+    const auto count = [&]() {
+        const std::vector<std::string> words = wordsOf(statement);
+        statement.clear();
+        if (words.empty()) return;
+        if (words[0] == "v") ++vertices;
+        if (words[0] == "f" && words.size() >= 4) triangles += words.size() - 3;
+    };
+    const bool byteOrderMark = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+    for (std::string line : linesOf(byteOrderMark ? text.substr(3) : text)) {
+        // A comment runs from a '#' that starts a word to the line's end.
+        for (size_t i = 0; i < line.size(); ++i)
+            if (line[i] == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(line[i - 1])))) {
+                line.resize(i);
+                break;
+            }
+        while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
         statement += line;
         if (!statement.empty() && statement.back() == '\\') {
             statement.back() = ' ';
             continue;
         }
-        std::vector<std::string> words = wordsOf(statement);
-        statement.clear();
-        const auto comment = std::find_if(words.begin(), words.end(), [](const std::string& w) { return w[0] == '#'; });
-        words.erase(comment, words.end());
-        if (words.empty()) continue;
-        if (words[0] == "v") ++vertices;
-        if (words[0] == "f" && words.size() >= 4) triangles += words.size() - 3;
+        count();
     }
+    count();
     census.vertices = vertices;
     census.vertexCountKnown = true;
     exactly(census, triangles);
@@ -86,30 +96,47 @@ FileCensus objCensus(const std::string& text) {
 
 FileCensus offCensus(const std::string& text) {
     FileCensus census;
+    // Lines of words, comments left out. The counts and the vertices'
+    // coordinates (three words each) may break across lines anywhere; each
+    // face is a line of its own: its corner count, its corners, maybe a
+    // colour. Other keywords (COFF, NOFF, 4OFF, ...) put more words on a
+    // vertex: those files are left uncounted.
     std::vector<std::vector<std::string>> lines;
     for (const std::string& line : linesOf(text)) {
         std::vector<std::string> words = wordsOf(line.substr(0, line.find('#')));
         if (!words.empty()) lines.push_back(words);
     }
-    if (lines.empty()) return census;
-    size_t at = 0;
-    std::vector<std::string> counts = lines[0];
-    const std::string& keyword = counts[0];
-    if (keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0) {
-        counts.erase(counts.begin());
-        if (counts.empty()) {
-            if (lines.size() < 2) return census;
-            counts = lines[++at];
-        }
+    std::vector<std::string> words;  // the header's and vertices' words, as consumed
+    size_t line = 0, word = 0;
+    const auto next = [&](std::string& out) {
+        if (line < lines.size() && word == lines[line].size()) ++line, word = 0;
+        if (line >= lines.size()) return false;
+        out = lines[line][word++];
+        return true;
+    };
+    std::string first;
+    if (!next(first)) return census;
+    const bool named = first.size() >= 3 && first.compare(first.size() - 3, 3, "OFF") == 0;
+    if (named && first != "OFF") return census;
+    std::string counts[3];
+    if (named) {
+        if (!next(counts[0])) return census;
+    } else {
+        counts[0] = first;
     }
     uint64_t vertices = 0, faces = 0;
-    if (counts.size() < 2 || !wholeNumber(counts[0], vertices) || !wholeNumber(counts[1], faces)) return census;
-    ++at;
-    if (lines.size() < at + vertices + faces) return census;
+    if (!next(counts[1]) || !next(counts[2]) || !wholeNumber(counts[0], vertices) || !wholeNumber(counts[1], faces))
+        return census;
+    std::string coordinate;
+    for (uint64_t i = 0; i < 3 * vertices; ++i)
+        if (!next(coordinate)) return census;
+    if (line < lines.size() && word != lines[line].size() && word != 0) return census;  // a face on a vertex's line
+    if (line < lines.size() && word == lines[line].size()) ++line;
+    if (lines.size() - line < faces) return census;
     uint64_t triangles = 0;
     for (uint64_t f = 0; f < faces; ++f) {
         uint64_t corners = 0;
-        if (!wholeNumber(lines[at + vertices + f][0], corners) || corners < 3) return census;
+        if (!wholeNumber(lines[line + f][0], corners) || corners < 3) return census;
         triangles += corners - 2;
     }
     census.vertices = vertices;
@@ -128,10 +155,12 @@ FileCensus stlCensus(const std::vector<uint8_t>& bytes) {
         }
     }
     uint64_t facets = 0;
-    for (const std::string& word : wordsOf(std::string(bytes.begin(), bytes.end()))) {
-        std::string lower = word;
-        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-        if (lower == "endfacet") ++facets;
+    for (const std::string& line : linesOf(std::string(bytes.begin(), bytes.end()))) {
+        const std::vector<std::string> words = wordsOf(line);
+        if (words.empty()) continue;
+        std::string first = words[0];
+        std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        if (first == "endfacet") ++facets;
     }
     exactly(census, facets);
     return census;
@@ -165,11 +194,17 @@ FileCensus plyCensus(const std::vector<uint8_t>& bytes) {
     std::string format;
     std::vector<PlyElement> elements;
     bool ended = false;
+    // Every header line ends as the first one does (LF, CRLF or CR), so a
+    // binary body right after a CR-ended header keeps its first byte.
+    size_t firstEnd = 0;
+    while (firstEnd < bytes.size() && bytes[firstEnd] != '\n' && bytes[firstEnd] != '\r') ++firstEnd;
+    const bool crlf = firstEnd + 1 < bytes.size() && bytes[firstEnd] == '\r' && bytes[firstEnd + 1] == '\n';
+    const uint8_t ending = firstEnd < bytes.size() ? bytes[firstEnd] : uint8_t('\n');
     while (at < bytes.size() && !ended) {
         size_t end = at;
-        while (end < bytes.size() && bytes[end] != '\n' && bytes[end] != '\r') ++end;
+        while (end < bytes.size() && bytes[end] != ending) ++end;
         const std::vector<std::string> words = wordsOf(std::string(bytes.begin() + long(at), bytes.begin() + long(end)));
-        if (end < bytes.size() && bytes[end] == '\r' && end + 1 < bytes.size() && bytes[end + 1] == '\n') ++end;
+        if (crlf && end + 1 < bytes.size()) ++end;
         at = end + 1;
         if (words.empty()) continue;
         if (words[0] == "format" && words.size() >= 2) format = words[1];
@@ -185,7 +220,15 @@ FileCensus plyCensus(const std::vector<uint8_t>& bytes) {
             if (words.size() == 5 && words[1] == "list") {
                 property.countSize = plyTypeSize(words[2]);
                 property.size = plyTypeSize(words[3]);
-                property.corners = elements.back().name == "face" && (words[4] == "vertex_indices" || words[4] == "vertex_index");
+                // The corners: vertex_indices, else vertex_index (one list a face).
+                PlyElement& element = elements.back();
+                const bool cornerName = words[4] == "vertex_indices" || words[4] == "vertex_index";
+                property.corners = element.name == "face" && cornerName;
+                for (PlyProperty& other : element.properties)
+                    if (property.corners && other.corners) {
+                        if (words[4] == "vertex_indices") other.corners = false;
+                        else property.corners = false;
+                    }
             } else if (words.size() == 3) {
                 property.size = plyTypeSize(words[1]);
             }

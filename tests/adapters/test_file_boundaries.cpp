@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
 
@@ -162,6 +163,37 @@ TEST(ObjWriter, WithoutAStoredLibraryNamesNone) {
     EXPECT_NE(notes[0].find("gone.mtl"), std::string::npos);
 }
 
+TEST(ObjWriter, ReadsNoSpecialFileAtTheLibrarysPlace) {
+    // A FIFO where OUT.mtl goes is neither read (which would wait for a
+    // writer for ever) nor replaced.
+    ScratchDir dir;
+    ASSERT_EQ(::mkfifo(dir.file("m.mtl").c_str(), 0600), 0);
+    drm::Mesh mesh = triangleWithMaterial("red");
+    mesh.metadata = {{"obj.mtl", "newmtl red\n"}};
+    const std::string error = errorOfWriting([&] { drm::vcgio::saveObj(dir.file("m.obj"), mesh); });
+    EXPECT_NE(error.find("not a regular file"), std::string::npos) << error;
+    EXPECT_EQ(sorted(dir.entries()), std::vector<std::string>{"m.mtl"});
+}
+
+TEST(ObjWriter, AFailedObjLeavesAnExistingLibraryAsItWas) {
+    ScratchDir dir;
+    writeText(dir.file("m.mtl"), kCanaryText);
+    ASSERT_EQ(::symlink(dir.file("missing/m.obj").c_str(), dir.file("m.obj").c_str()), 0);
+    drm::Mesh mesh = triangleWithMaterial("red");
+    mesh.metadata = {{"obj.mtl", "newmtl red\n"}};
+    EXPECT_FALSE(errorOfWriting([&] { drm::vcgio::saveObj(dir.file("m.obj"), mesh); }).empty());
+    EXPECT_EQ(readText(dir.file("m.mtl")), kCanaryText);
+    EXPECT_EQ(sorted(dir.entries()), (std::vector<std::string>{"m.mtl", "m.obj"}));
+}
+
+TEST(ObjWriter, RefusesABackslashInItsFileName) {
+    ScratchDir dir;
+    const std::string error =
+        errorOfWriting([&] { drm::vcgio::saveObj(dir.file("x\\y.obj"), triangleWithMaterial("red")); });
+    EXPECT_NE(error.find("'\\'"), std::string::npos) << error;
+    EXPECT_TRUE(dir.entries().empty());
+}
+
 // --- Names that would change a file's structure are refused ---
 
 TEST(ObjWriter, RefusesAMaterialNameThatWouldAddStatements) {
@@ -205,6 +237,65 @@ TEST(PlyWriter, RefusesATextureNameThatWouldEndTheComment) {
     const std::string error = errorOfWriting([&] { drm::vcgio::savePly(dir.file("m.ply"), mesh); });
     EXPECT_NE(error.find("cannot be written in PLY"), std::string::npos) << error;
     EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(Readers, RefuseNamesWithControlCharacters) {
+    ScratchDir dir;
+    writeText(dir.file("t.ply"), "ply\nformat ascii 1.0\ncomment TextureFile a\fb.png\nelement vertex 3\nproperty float x\n"
+                                 "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    writeText(dir.file("m.obj"), std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\x1b]0;x\x07b\nf 1 2 3\n"));
+    for (const char* name : {"t.ply", "m.obj"}) {
+        try {
+            loadMesh(dir.file(name));
+            ADD_FAILURE() << name << " was read";
+        } catch (const drm::Error& e) {
+            EXPECT_NE(std::string(e.what()).find("control character"), std::string::npos) << e.what();
+            EXPECT_EQ(std::string(e.what()).find('\x1b'), std::string::npos) << "the message holds the raw name";
+        }
+    }
+}
+
+TEST(PlyReader, NamesDataPastItsLastElement) {
+    ScratchDir dir;
+    writeText(dir.file("m.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                 "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 2 1 0\n");
+    const LoadedMesh loaded = loadMesh(dir.file("m.ply"));
+    EXPECT_EQ(loaded.mesh.faceCount(), 1u);
+    EXPECT_TRUE(hasNoteContaining(loaded, "goes on past the last element its header declares: 4 characters"));
+}
+
+TEST(PlyWriter, KeepsTextureNamesWithBlanksAtTheirEnds) {
+    ScratchDir dir;
+    drm::Mesh mesh;
+    mesh.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    mesh.triangles = {0, 1, 2};
+    mesh.cornerTexCoords = {0, 0, 1, 0, 0, 1};
+    mesh.textures = {" lead.png", "trail.png ", "a  b#c.png"};
+    mesh.faceTexture = {1};
+    drm::vcgio::savePly(dir.file("m.ply"), mesh);
+    EXPECT_EQ(loadMesh(dir.file("m.ply")).mesh.textures, mesh.textures);
+}
+
+TEST(ObjReader, NamesTheLibrariesItDoesNotRead) {
+    ScratchDir dir;
+    writeText(dir.file("a.mtl"), "newmtl red\n");
+    writeText(dir.file("b.mtl"), "newmtl blue\n");
+    writeText(dir.file("m.obj"), std::string("mtllib a.mtl\nmtllib b.mtl\n") + kTriangleObj);
+    const LoadedMesh loaded = loadMesh(dir.file("m.obj"));
+    EXPECT_EQ(metadataOf(loaded.mesh, "obj.mtl"), "newmtl red\n");
+    EXPECT_TRUE(hasNoteContaining(loaded, "only the first material library, a.mtl, is read"));
+}
+
+TEST(LibraryInsideFolder, ManyUnknownStatementsAreCountedNotListed) {
+    ScratchDir dir;
+    std::string junk;
+    for (int i = 0; i < 20000; ++i) junk += "x y\n";
+    writeText(dir.file("lib.mtl"), junk + "newmtl red\n");
+    writeText(dir.file("m.obj"), std::string("mtllib lib.mtl\n") + kTriangleObj);
+    const LoadedMesh loaded = loadMesh(dir.file("m.obj"));
+    EXPECT_TRUE(hasNoteContaining(loaded, "line 5 (x) and 19995 more"));
 }
 
 TEST(ObjWriter, KeepsNamesWithBlanksBracesTildesAndUtf8) {

@@ -303,6 +303,8 @@ TEST(LoadMesh, AsciiStlReadsEverySolid) {
     const std::string facet = "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n endloop\nendfacet\n";
     const std::string moved = "FACET NORMAL 0 0 1\r OUTER LOOP\r  VERTEX 3 3 0\r  VERTEX 2 3 0\r  VERTEX 0 2 0\r ENDLOOP\rENDFACET\r";
     writeText(dir.file("two.stl"), "solid a\n" + facet + "endsolid a\nsolid empty\nendsolid\nSOLID b\r" + moved + "ENDSOLID b\r");
+    writeText(dir.file("upper-cr.stl"), "SOLID b\r" + moved + "ENDSOLID b\r");
+    EXPECT_EQ(loadMesh(dir.file("upper-cr.stl")).mesh.faceCount(), 1u);
     const drm::vcgio::LoadedMesh loaded = loadMesh(dir.file("two.stl"));
     EXPECT_EQ(loaded.mesh.positions, (std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 3, 3, 0, 2, 3, 0, 0, 2, 0}));
     EXPECT_EQ(loaded.mesh.triangles, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));

@@ -290,7 +290,16 @@ output_is_input)
     mkdir out
     cp a.drm out/c.ply
     run 1 decode out/c.ply -o out
-    grep -q "it is the input" err.txt || fail "decode out/c.ply -o out: $(cat err.txt)"
+    grep -q "it is one of the inputs" err.txt || fail "decode out/c.ply -o out: $(cat err.txt)"
+    # A batch output that is another input (here through a link) is refused
+    # before anything is written.
+    mkdir d
+    cp a.ply d/a.ply
+    ln -s d/a.ply z.drm
+    expect_error 1 - decode a.drm z.drm -o d -j 1
+    grep -q "it is one of the inputs" err.txt || fail "decode a.drm z.drm -o d: $(cat err.txt)"
+    cmp -s d/a.ply a.ply || fail "a batch replaced another input"
+    [ ! -e d/z.ply ] || fail "a refused batch wrote d/z.ply"
     cmp -s out/c.ply keep.drm || fail "decode -o changed its input"
     ;;
 decode_writes_only_its_outputs)

@@ -88,6 +88,25 @@ TEST(FileCensus, PlyTriangleStripsLeaveTheTrianglesOpen) {
     EXPECT_EQ(censusMismatch(census, 4, 2), "");
 }
 
+// Files the readers take whole, which the census must count alike.
+TEST(FileCensus, AgreesWithTheReadersOnValidOddities) {
+    const std::string quad = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\n";
+    expectCounts(takeCensus("m.obj", bytesOf("# from C:\\M\\\n" + quad + "f 2 4 3\n")), true, 4, 2);
+    expectCounts(takeCensus("m.obj", bytesOf("\xEF\xBB\xBF" + quad)), true, 4, 1);
+    expectCounts(takeCensus("m.obj", bytesOf(quad + "f 2 4 3 \\")), true, 4, 2);
+    expectCounts(takeCensus("m.off", bytesOf("OFF\n4 2 0\n0 0 0\n1 0\n0\n0 1 0\n5 1 0\n3 0 1 2\n3 1 3 2\n")), true, 4, 2);
+    const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+    expectCounts(takeCensus("m.stl", bytesOf("solid endfacet part\n" + facet + "endsolid endfacet part\n")), false, 0, 1);
+    std::string crPly = "ply\rformat binary_little_endian 1.0\relement vertex 1\rproperty float x\rproperty float y\r"
+                        "property float z\relement face 0\rproperty list uchar int vertex_indices\rend_header\r";
+    crPly += std::string("\x0a\0\0\0\0\0\0\0\0\0\0\0", 12);
+    expectCounts(takeCensus("m.ply", bytesOf(crPly)), true, 1, 0);
+    const std::string both = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_index\nproperty list uchar int vertex_indices\n"
+                             "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2 4 0 1 3 2\n";
+    expectCounts(takeCensus("m.ply", bytesOf(both)), true, 4, 2);
+}
+
 TEST(FileCensus, MismatchNamesWhatTheReaderLost) {
     FileCensus census;
     census.known = census.vertexCountKnown = true;

@@ -102,7 +102,17 @@ private:
 
 }  // namespace
 
-void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+namespace {
+
+// A file written in full under a temporary name beside its target, not yet
+// renamed over it.
+struct PreparedFile {
+    std::string target, temporary, shown;
+};
+
+// Everything of writeFileAtomically but the rename: checks, the temporary
+// file, its content, mode and owner, fsync.
+PreparedFile prepareFile(const std::string& path, const std::function<void(std::ostream&)>& write) {
     // A symbolic link is written through: its target gets the new content
     // and the link stays a link (as an editor saving through it would).
     const std::string target = linkTarget(path);
@@ -173,19 +183,51 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
         ::unlink(temporary.c_str());
         throw Error(ErrorKind::Io, "cannot write " + shown + ": " + systemReason());
     }
-    if (std::rename(temporary.c_str(), target.c_str()) != 0) {
+    return PreparedFile{target, temporary, shown};
+}
+
+// Renames a prepared file over its target and syncs the folder.
+void commitFile(const PreparedFile& file) {
+    if (std::rename(file.temporary.c_str(), file.target.c_str()) != 0) {
         const std::string reason = systemReason();
-        ::unlink(temporary.c_str());
-        throw Error(ErrorKind::Io, "cannot write " + shown + ": " + reason);
+        ::unlink(file.temporary.c_str());
+        throw Error(ErrorKind::Io, "cannot write " + file.shown + ": " + reason);
     }
     // The rename lives in the folder: sync it too, or a crash soon after
     // can bring back the old file (or none). The new file is in place by
     // now, so only a real I/O error is reported.
-    const int folder = ::open(folderOf(target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    const int folder = ::open(folderOf(file.target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (folder >= 0) {
         const bool failed = ::fsync(folder) != 0 && errno == EIO;
         ::close(folder);
-        if (failed) throw Error(ErrorKind::Io, "cannot write " + shown + ": the folder could not be synced (I/O error)");
+        if (failed) throw Error(ErrorKind::Io, "cannot write " + file.shown + ": the folder could not be synced (I/O error)");
+    }
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+    commitFile(prepareFile(path, write));
+}
+
+void writeFilesAtomically(const std::vector<std::pair<std::string, std::vector<uint8_t>>>& files) {
+    std::vector<PreparedFile> prepared;
+    try {
+        for (const auto& file : files)
+            prepared.push_back(prepareFile(file.first, [&file](std::ostream& out) {
+                out.write(reinterpret_cast<const char*>(file.second.data()), std::streamsize(file.second.size()));
+            }));
+    } catch (...) {
+        for (const PreparedFile& done : prepared) ::unlink(done.temporary.c_str());
+        throw;
+    }
+    for (size_t i = 0; i < prepared.size(); ++i) {
+        try {
+            commitFile(prepared[i]);
+        } catch (...) {
+            for (size_t j = i + 1; j < prepared.size(); ++j) ::unlink(prepared[j].temporary.c_str());
+            throw;
+        }
     }
 }
 

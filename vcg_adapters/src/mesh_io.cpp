@@ -14,6 +14,7 @@
 #include "ply_reader.h"
 #include "stl_ascii_reader.h"
 #include "stl_weld.h"
+#include "text_lines.h"
 
 #include <algorithm>
 #include <cctype>
@@ -90,6 +91,23 @@ void checkFinite(const std::vector<float>& values, size_t perItem, const char* i
         if (!std::isfinite(values[i]))
             throw Error(ErrorKind::InvalidInput, std::string(item) + " " + std::to_string(i / perItem) + " has a non-finite " + what + " (" +
                         std::to_string(values[i]) + ")");
+}
+
+// A material or texture name with a control character could not be
+// written back into any file's line: refused here, when encoding, rather
+// than by every decode.
+void checkNamesWritable(const drm::Mesh& mesh) {
+    const auto check = [](const std::vector<std::string>& names, const char* what) {
+        for (size_t i = 0; i < names.size(); ++i)
+            for (char c : names[i]) {
+                const unsigned char u = static_cast<unsigned char>(c);
+                if ((u < 0x20 && c != '\t') || u == 0x7F)
+                    throw Error(ErrorKind::InvalidInput, std::string(what) + " \"" + printableName(names[i]) +
+                                "\" holds a control character, which no mesh file can hold in a name");
+            }
+    };
+    check(mesh.materials, "the material name");
+    check(mesh.textures, "the texture file name");
 }
 
 void checkAttributesFinite(const drm::Mesh& mesh) {
@@ -262,16 +280,16 @@ void addMaterialLibrary(const std::string& objPath, const std::string& mtllib, d
     std::string why;
     const std::string mtlPath = libraryInsideFolder(objPath, mtllib, why);
     if (mtlPath.empty()) {
-        notes.push_back("the material library " + mtllib + " is not read (" + why + "): only its name is kept");
+        notes.push_back("the material library " + printableName(mtllib) + " is not read (" + why + "): only its name is kept");
         return;
     }
     const std::vector<uint8_t> bytes = readFileBytes(mtlPath);
     const MtlLibrary parsed = readMtl(std::string(bytes.begin(), bytes.end()));
     mesh.metadata.emplace_back("obj.mtl", parsed.text);
     if (!parsed.dropped.empty()) {
-        std::vector<std::string> lines(parsed.dropped.begin(), parsed.dropped.begin() + long(std::min<size_t>(parsed.dropped.size(), 5)));
-        if (parsed.dropped.size() > 5) lines.push_back(std::to_string(parsed.dropped.size() - 5) + " more");
-        notes.push_back("the material library " + mtllib + "'s statements on " + joinList(lines) +
+        std::vector<std::string> lines = parsed.dropped;
+        if (parsed.droppedCount > lines.size()) lines.push_back(std::to_string(parsed.droppedCount - lines.size()) + " more");
+        notes.push_back("the material library " + printableName(mtllib) + "'s statements on " + joinList(lines) +
                         " are not kept in .drm files");
     }
     std::vector<uint32_t> textureOfMaterial(mesh.materials.size(), 0);
@@ -302,6 +320,9 @@ LoadedMesh loadObj(const std::string& path) {
     if (obj.verticesWithoutColour > 0)
         loaded.notes.push_back(std::to_string(obj.verticesWithoutColour) + " vertices have no colour: they get white");
     if (obj.coloursOver255) loaded.notes.push_back("vertex colours above 1 were read as 0..255, not 0..1");
+    if (obj.otherLibraries > 0)
+        loaded.notes.push_back("only the first material library, " + printableName(obj.mtllib) + ", is read: the file names " +
+                               std::to_string(obj.otherLibraries) + " more, whose materials are not kept");
     if (obj.texCoordW) loaded.notes.push_back("the texture coordinates' third (w) component is not kept in .drm files");
     if (obj.unusedTexCoords) loaded.notes.push_back("the file's texture coordinates (vt) are used by no face: they are not kept");
     if (obj.unusedNormals) loaded.notes.push_back("the file's normals (vn) are used by no face: they are not kept");
@@ -333,6 +354,7 @@ LoadedMesh loadMesh(const std::string& path) {
         else if (extension == ".obj") loaded = loadObj(path);
         else throw Error(ErrorKind::InvalidInput, "unknown mesh format '" + extension + "' (expected .ply, .obj, .off or .stl)");
         if (loaded.mesh.vertexCount() == 0) throw Error(ErrorKind::InvalidInput, "the file holds no vertices");
+        checkNamesWritable(loaded.mesh);
         checkAttributesFinite(loaded.mesh);
         return loaded;
     } catch (const std::bad_alloc&) {

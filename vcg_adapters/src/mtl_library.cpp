@@ -28,6 +28,9 @@ bool oneOf(const std::string& word, const char* const (&list)[N]) {
 
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
+// Statements left out that a note names one by one.
+const size_t kDroppedNamed = 5;
+
 bool isNumber(const std::string& token) {
     char* end = nullptr;
     std::strtod(token.c_str(), &end);
@@ -80,7 +83,10 @@ MtlLibrary readMtl(const std::string& text) {
         if (line.empty()) continue;
         const std::vector<Word> words = wordsOf(line);
         const std::string& keyword = words[0].text;
-        const auto drop = [&] { library.dropped.push_back("line " + std::to_string(lineNumber) + " (" + keyword + ")"); };
+        const auto drop = [&] {
+            if (++library.droppedCount <= kDroppedNamed)
+                library.dropped.push_back("line " + std::to_string(lineNumber) + " (" + keyword.substr(0, 40) + ")");
+        };
         if (words.size() < 2 || hasControlCharacter(line)) {
             drop();
             continue;

@@ -23,8 +23,10 @@ struct MtlLibrary {
     std::string text;
     // (material name, map_Kd file name) for each map_Kd, in file order.
     std::vector<std::pair<std::string, std::string>> textures;
-    // Statements left out, as "line N (KEYWORD)", for a note.
+    // Statements left out, as "line N (KEYWORD)", for a note: the first
+    // few, then how many in all.
     std::vector<std::string> dropped;
+    size_t droppedCount = 0;
 };
 
 // Parses .mtl text (statement lines as text_lines.h reads them). Never

@@ -147,6 +147,7 @@ ObjContents readObj(const std::string& text) {
             const size_t from = line.find_first_not_of(" \t", line.find("mtllib") + 6);
             const std::string name = from == std::string::npos ? "" : line.substr(from);
             if (contents.mtllib.empty()) contents.mtllib = name;
+            else if (name != contents.mtllib) ++contents.otherLibraries;
         } else if (keyword == "l" || keyword == "p") {
             contents.linesOrPoints = true;
         } else if (keyword == "f") {

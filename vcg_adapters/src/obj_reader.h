@@ -26,6 +26,7 @@ struct ObjContents {
     // .mtl file, which the caller reads (see mtllib).
     drm::Mesh mesh;
     std::string mtllib;                // the first `mtllib` file name, or ""
+    size_t otherLibraries = 0;         // further `mtllib` lines naming other files (not read)
     size_t polygons = 0;               // faces with more than 3 corners
     size_t trianglesFromPolygons = 0;
     // What the file holds that is not kept, or kept only in part.

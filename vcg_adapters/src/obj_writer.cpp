@@ -15,6 +15,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <sys/stat.h>
 
 namespace drm {
 namespace vcgio {
@@ -119,7 +120,11 @@ GeneratedLibrary generateLibrary(const drm::Mesh& mesh) {
     return library;
 }
 
+// Whether `path` is a regular file holding exactly `text`; anything else
+// (a FIFO, a device, a file of another size) is not read at all.
 bool fileHoldsText(const std::string& path, const std::string& text) {
+    struct stat info;
+    if (::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode) || uint64_t(info.st_size) != text.size()) return false;
     std::ifstream in(path, std::ios::binary);
     if (!in) return false;
     std::ostringstream content;
@@ -153,7 +158,10 @@ std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh)
         haveText = true;
     }
     if (!haveText && haveName)
-        notes.push_back("the material library " + keptName + " was not in the .drm file: " + path + " names none");
+        notes.push_back("the material library " + printableName(keptName) + " was not in the .drm file: " + path + " names none");
+    if (path.find('\\', path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/')) != std::string::npos)
+        throw Error(ErrorKind::InvalidInput, "cannot write " + path + ": a '\\' in an OBJ's file name would name its library "
+                    "in another folder for readers that take it as a separator");
     const std::string libraryPath = objLibraryPath(path);
     const std::string libraryName = baseName(libraryPath);
     if (haveText) refuseUnwritableName(path, "the material library's name", libraryName);
@@ -222,12 +230,13 @@ std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh)
         out += "\n";
     }
 
-    // The library first: if it cannot be written, the OBJ is not either.
-    if (haveText) {
-        if (!fileHoldsText(libraryPath, libraryText))
-            writeFileAtomically(libraryPath, std::vector<uint8_t>(libraryText.begin(), libraryText.end()));
-    }
-    writeFileAtomically(path, std::vector<uint8_t>(out.begin(), out.end()));
+    // The OBJ and its library are written together: if either cannot be,
+    // neither file is touched. A library already holding the text is left.
+    std::vector<std::pair<std::string, std::vector<uint8_t>>> files;
+    files.emplace_back(path, std::vector<uint8_t>(out.begin(), out.end()));
+    if (haveText && !fileHoldsText(libraryPath, libraryText))
+        files.emplace_back(libraryPath, std::vector<uint8_t>(libraryText.begin(), libraryText.end()));
+    writeFilesAtomically(files);
 
     if (withColours) {
         bool opaque = true;

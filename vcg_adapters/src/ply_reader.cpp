@@ -618,6 +618,15 @@ public:
             }
             finish(e);
         }
+        // Data past the last element the header declares (more faces than
+        // its count, say) is not read: say so rather than drop it quietly.
+        size_t trailing = size_t(end - at);
+        if (header_.encoding == Encoding::Ascii)
+            trailing = size_t(std::count_if(at, end, [](uint8_t c) { return !isBlank(c) && c != 0; }));
+        if (trailing > 0)
+            out_.conversions.push_back("the file goes on past the last element its header declares: " +
+                                       std::to_string(trailing) + (header_.encoding == Encoding::Ascii ? " characters" : " bytes") +
+                                       " are not read");
         assemble();
     }
 

@@ -44,7 +44,7 @@ namespace vcgio {
 struct PlyContents {
     drm::Mesh mesh;
     size_t trianglesFromPolygons = 0;        // triangles split from faces of more than 3 corners
-    std::vector<std::string> conversions;    // sentences: values changed on the way in, and how
+    std::vector<std::string> conversions;    // sentences: values changed on the way in, and how, or data past the last element
     std::vector<std::string> dropped;        // "per-face normals", "edges", ...
     std::vector<std::string> otherProperties;  // "vertex.curvature", in header order
     std::vector<std::string> otherElements;    // elements with items that are not read

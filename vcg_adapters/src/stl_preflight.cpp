@@ -4,6 +4,7 @@
 #include <drm/drm.h>
 
 #include <algorithm>
+#include <cctype>
 
 namespace drm {
 namespace vcgio {
@@ -26,9 +27,11 @@ bool preflightStl(const std::vector<uint8_t>& bytes) {
                                                           return b != ' ' && b != '\t' && b != '\r' && b != '\n';
                                                       }) - bytes.begin()));
     const std::string solid = "solid";
-    if (bytes.size() - start < solid.size() || !std::equal(solid.begin(), solid.end(), bytes.begin() + start))
+    if (bytes.size() - start < solid.size() ||
+        !std::equal(solid.begin(), solid.end(), bytes.begin() + long(start),
+                    [](char a, uint8_t b) { return a == char(std::tolower(b)); }))
         throw Error(ErrorKind::InvalidInput, "not an STL file: ASCII STL starts with \"solid\"");
-    if (std::find(bytes.begin() + start, bytes.end(), uint8_t('\n')) == bytes.end())
+    if (std::find_if(bytes.begin() + long(start), bytes.end(), [](uint8_t b) { return b == '\n' || b == '\r'; }) == bytes.end())
         throw Error(ErrorKind::InvalidInput, "not an STL file: ASCII STL without a single line break");
     return false;
 }

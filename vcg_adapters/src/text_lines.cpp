@@ -32,14 +32,14 @@ void stripComment(std::string& line) {
     line = line.substr(from, to - from);
 }
 
-const char* unwritableNameReason(const std::string& name, bool hashStartsComment) {
+const char* unwritableNameReason(const std::string& name, bool objOrMtl) {
     for (size_t i = 0; i < name.size(); ++i) {
         const unsigned char c = static_cast<unsigned char>(name[i]);
         if ((c < 0x20 && c != '\t') || c == 0x7F) return "it holds a line break or another control character";
-        if (hashStartsComment && c == '#' && i > 0 && isBlank(name[i - 1])) return "it holds a '#' after a blank, where a comment starts";
+        if (objOrMtl && c == '#' && i > 0 && isBlank(name[i - 1])) return "it holds a '#' after a blank, where a comment starts";
     }
-    if (!name.empty() && (isBlank(name.front()) || isBlank(name.back()))) return "it starts or ends with a blank";
-    if (hashStartsComment && !name.empty() && name[0] == '#') return "it starts with '#', where a comment starts";
+    if (objOrMtl && !name.empty() && (isBlank(name.front()) || isBlank(name.back()))) return "it starts or ends with a blank";
+    if (objOrMtl && !name.empty() && name[0] == '#') return "it starts with '#', where a comment starts";
     return nullptr;
 }
 

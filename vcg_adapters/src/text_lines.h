@@ -19,10 +19,11 @@ void stripComment(std::string& line);
 
 // Why a name (material, texture or library file) cannot be written as the
 // rest of a line and be read back the same, or nullptr if it can: a control
-// character would end or bend the line and blanks at either end are trimmed
-// by readers; in OBJ and MTL (hashStartsComment) a '#' at the start or after
-// a blank starts a comment.
-const char* unwritableNameReason(const std::string& name, bool hashStartsComment);
+// character would end or bend the line. In OBJ and MTL (objOrMtl) blanks at
+// either end are trimmed by readers and a '#' at the start or after a blank
+// starts a comment; drm's PLY reader keeps the rest of a comment line as it
+// is.
+const char* unwritableNameReason(const std::string& name, bool objOrMtl);
 
 // The name for a message: control characters as \n, \r, \t or \xNN.
 std::string printableName(const std::string& name);

@@ -20,6 +20,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace drm {
@@ -31,6 +32,12 @@ namespace vcgio {
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 void writeFileAtomically(const std::string& path, const std::vector<uint8_t>& bytes);
+
+// Several files that belong together (an OBJ and its library): each is
+// written in full under its temporary name first, and only when all are
+// complete are they renamed over their targets, so a failure before that
+// leaves every existing file as it was.
+void writeFilesAtomically(const std::vector<std::pair<std::string, std::vector<uint8_t>>>& files);
 
 // Throws drm::Error("cannot write OUTPUT: it is the input INPUT") when
 // `output` names the same file as `input` (the same path, a link to it or a
