@@ -45,16 +45,6 @@ std::string lowerExtension(const std::string& path) {
     return extension;
 }
 
-// "a", "a and b", "a, b and c".
-std::string joinList(const std::vector<std::string>& items) {
-    std::string out;
-    for (size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) out += (i + 1 == items.size()) ? " and " : ", ";
-        out += items[i];
-    }
-    return out;
-}
-
 void addDroppedNote(std::vector<std::string>& notes, const std::vector<std::string>& dropped) {
     if (!dropped.empty()) notes.push_back("the file's " + joinList(dropped) + " are not kept in .drm files");
 }

@@ -15,19 +15,6 @@ namespace vcgio {
 
 namespace {
 
-std::vector<std::string> splitBlanks(const std::string& line) {
-    std::vector<std::string> tokens;
-    size_t from = 0;
-    while (from < line.size()) {
-        while (from < line.size() && (line[from] == ' ' || line[from] == '\t' || line[from] == '\r')) ++from;
-        size_t to = from;
-        while (to < line.size() && line[to] != ' ' && line[to] != '\t' && line[to] != '\r') ++to;
-        if (to > from) tokens.push_back(line.substr(from, to - from));
-        from = to;
-    }
-    return tokens;
-}
-
 float parseCoordinate(const std::string& token, const std::string& where) {
     char* end = nullptr;
     const double value = std::strtod(token.c_str(), &end);
@@ -108,7 +95,7 @@ ObjContents readObj(const std::string& text) {
             line.back() = ' ';
             if (position < text.size()) line += nextLine();
         }
-        const std::vector<std::string> tokens = splitBlanks(line);
+        const std::vector<std::string> tokens = splitWords(line);
         if (tokens.empty()) continue;
         const std::string where = "line " + std::to_string(lineNumber);
         const std::string& keyword = tokens[0];

@@ -8,6 +8,8 @@
 // else, and every ASCII file, is read item by item.
 #include "ply_reader.h"
 
+#include "text_lines.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cfloat>
@@ -25,16 +27,6 @@ namespace vcgio {
 namespace {
 
 Error invalid(const std::string& message) { return Error(ErrorKind::InvalidInput, message); }
-
-// "a", "a and b", "a, b and c".
-std::string joinList(const std::vector<std::string>& items) {
-    std::string out;
-    for (size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) out += (i + 1 == items.size()) ? " and " : ", ";
-        out += items[i];
-    }
-    return out;
-}
 
 // ---------------------------------------------------------------- types
 

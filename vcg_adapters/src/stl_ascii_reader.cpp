@@ -13,18 +13,6 @@ namespace vcgio {
 
 namespace {
 
-std::vector<std::string> wordsOf(const std::string& line) {
-    std::vector<std::string> words;
-    size_t at = 0;
-    while (at < line.size()) {
-        while (at < line.size() && std::isspace(static_cast<unsigned char>(line[at]))) ++at;
-        const size_t start = at;
-        while (at < line.size() && !std::isspace(static_cast<unsigned char>(line[at]))) ++at;
-        if (at > start) words.push_back(line.substr(start, at - start));
-    }
-    return words;
-}
-
 std::string lower(std::string word) {
     std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return word;
@@ -38,7 +26,7 @@ AsciiStl readAsciiStl(const std::string& text) {
     std::vector<float> corners;  // of the facet being read
     size_t position = 0, lineNumber = 0;
     while (position < text.size()) {
-        const std::vector<std::string> words = wordsOf(takeLine(text, position));
+        const std::vector<std::string> words = splitWords(takeLine(text, position));
         ++lineNumber;
         if (words.empty()) continue;
         const std::string where = "line " + std::to_string(lineNumber);

@@ -10,6 +10,28 @@ bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
 }  // namespace
 
+std::vector<std::string> splitWords(const std::string& line) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; };
+    std::vector<std::string> words;
+    size_t at = 0;
+    while (at < line.size()) {
+        while (at < line.size() && blank(line[at])) ++at;
+        const size_t start = at;
+        while (at < line.size() && !blank(line[at])) ++at;
+        if (at > start) words.push_back(line.substr(start, at - start));
+    }
+    return words;
+}
+
+std::string joinList(const std::vector<std::string>& items) {
+    std::string out;
+    for (size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) out += (i + 1 == items.size()) ? " and " : ", ";
+        out += items[i];
+    }
+    return out;
+}
+
 std::string takeLine(const std::string& text, size_t& position) {
     size_t end = position;
     while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace drm {
 namespace vcgio {
@@ -11,6 +12,13 @@ namespace vcgio {
 // The line that starts at `position`, without its ending (LF, CRLF or a lone
 // CR, as old Mac tools write), and moves `position` past that ending.
 std::string takeLine(const std::string& text, size_t& position);
+
+// The words of a line: runs of characters between blanks (space, tab, CR,
+// form feed, vertical tab).
+std::vector<std::string> splitWords(const std::string& line);
+
+// "a", "a and b", "a, b and c".
+std::string joinList(const std::vector<std::string>& items);
 
 // Cuts a statement's comment off, from a '#' that starts the line or follows
 // a blank ("usemtl red # shiny" is the material "red"; "tex#1.png" keeps its
