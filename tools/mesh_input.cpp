@@ -9,8 +9,8 @@ namespace drm {
 namespace cli {
 
 drm::vcgio::LoadedMesh loadMeshForEncoding(const std::string& path) {
-    // vcglib's readers are not thread-safe (the PLY reader tokenizes with
-    // strtok, error tables are filled on first use): `drm encode -o` and
+    // vcglib's readers, which drm still uses for OFF and binary STL, keep
+    // shared state (error tables filled on first use): `drm encode -o` and
     // `drm verify` with several files read one file at a time and encode in
     // parallel.
     static std::mutex reading;

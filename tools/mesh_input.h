@@ -13,7 +13,7 @@ namespace cli {
 
 // loadMesh; a file without vertices is refused here, naming the file.
 // Non-manifold meshes are the codec's business (it cuts and restores them).
-// Thread-safe: files are read one at a time (vcglib's readers share state).
+// Thread-safe: files are read one at a time (vcglib's OFF and STL readers share state).
 drm::vcgio::LoadedMesh loadMeshForEncoding(const std::string& path);
 
 // "" for a mesh that needed no repair, otherwise a sentence counting the
