@@ -110,6 +110,7 @@ EncodedFile encodeFile(const std::string& input, const std::string& output, drm:
                        ProgressBar* bar, bool alone) {
     drm::vcgio::refuseOverwritingInput(input, output);
     const drm::vcgio::LoadedMesh loaded = loadMeshForEncoding(input);
+    for (const std::string& read : loaded.otherFilesRead) drm::vcgio::refuseOverwritingInput(read, output);
     if (alone) mapLargeBlocksApart(loaded.mesh.vertexCount());
     drm::Encoded encoded;
     if (bar) options.progress = bar->callback();

@@ -302,6 +302,20 @@ output_is_input)
     [ ! -e d/z.ply ] || fail "a refused batch wrote d/z.ply"
     cmp -s out/c.ply keep.drm || fail "decode -o changed its input"
     ;;
+encode_keeps_the_library)
+    # An output that is the OBJ's material library (here a link to it) is
+    # refused, and the library stays.
+    printf 'newmtl red\nKd 1 0 0\n' >m.mtl
+    printf 'mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n' >m.obj
+    cp m.mtl keep.mtl
+    ln -s m.mtl out.drm
+    expect_error 1 - encode m.obj out.drm
+    grep -q "it is the input" err.txt || fail "encode m.obj out.drm: $(cat err.txt)"
+    cmp -s m.mtl keep.mtl || fail "encode replaced the OBJ's library"
+    mkdir e && ln -s ../m.mtl e/m.drm
+    run 1 encode m.obj -o e
+    cmp -s m.mtl keep.mtl || fail "encode -o replaced the OBJ's library"
+    ;;
 decode_writes_only_its_outputs)
     # A .drm from an OBJ whose library has another name decodes to OUT.obj
     # and OUT.mtl, and nothing else; the canary beside them stays.

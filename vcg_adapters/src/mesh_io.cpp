@@ -263,8 +263,9 @@ std::string libraryInsideFolder(const std::string& objPath, const std::string& m
 // metadata ("obj.mtllib": the name as written, "obj.mtl": the statements,
 // see mtl_library.h), its map_Kd file names into the texture list, and each
 // face gets its material's texture when there are several.
-void addMaterialLibrary(const std::string& objPath, const std::string& mtllib, drm::Mesh& mesh,
-                        std::vector<std::string>& notes) {
+void addMaterialLibrary(const std::string& objPath, const std::string& mtllib, LoadedMesh& loaded) {
+    drm::Mesh& mesh = loaded.mesh;
+    std::vector<std::string>& notes = loaded.notes;
     if (mtllib.empty()) return;
     mesh.metadata.emplace_back("obj.mtllib", mtllib);
     std::string why;
@@ -274,6 +275,7 @@ void addMaterialLibrary(const std::string& objPath, const std::string& mtllib, d
         return;
     }
     const std::vector<uint8_t> bytes = readFileBytes(mtlPath);
+    loaded.otherFilesRead.push_back(mtlPath);
     const MtlLibrary parsed = readMtl(std::string(bytes.begin(), bytes.end()));
     mesh.metadata.emplace_back("obj.mtl", parsed.text);
     if (!parsed.dropped.empty()) {
@@ -301,7 +303,7 @@ LoadedMesh loadObj(const std::string& path) {
     LoadedMesh loaded;
     loaded.mesh = std::move(obj.mesh);
     addPolygonNote(loaded.notes, obj.trianglesFromPolygons, loaded.mesh.faceCount());
-    addMaterialLibrary(path, obj.mtllib, loaded.mesh, loaded.notes);
+    addMaterialLibrary(path, obj.mtllib, loaded);
     if (obj.cornersWithoutTexCoord > 0)
         loaded.notes.push_back(std::to_string(obj.cornersWithoutTexCoord) +
                                " face corners have no texture coordinate: they get (0, 0)");

@@ -22,6 +22,9 @@ struct LoadedMesh {
     // triangles, STL corners welded) and what the file holds that a .drm
     // file does not keep (colours, normals, texture coordinates, ...).
     std::vector<std::string> notes;
+    // Other files read besides the mesh file (an OBJ's material library),
+    // so that a caller can refuse to write over them.
+    std::vector<std::string> otherFilesRead;
 };
 
 // Reads a PLY, OBJ, OFF or STL file (chosen by extension, any case).
