@@ -88,13 +88,10 @@ void checkFinite(const std::vector<float>& values, size_t perItem, const char* i
 // than by every decode.
 void checkNamesWritable(const drm::Mesh& mesh) {
     const auto check = [](const std::vector<std::string>& names, const char* what) {
-        for (size_t i = 0; i < names.size(); ++i)
-            for (char c : names[i]) {
-                const unsigned char u = static_cast<unsigned char>(c);
-                if ((u < 0x20 && c != '\t') || u == 0x7F)
-                    throw Error(ErrorKind::InvalidInput, std::string(what) + " \"" + printableName(names[i]) +
-                                "\" holds a control character, which no mesh file can hold in a name");
-            }
+        for (const std::string& name : names)
+            if (holdsControlCharacter(name))
+                throw Error(ErrorKind::InvalidInput, std::string(what) + " \"" + printableName(name) +
+                            "\" holds a control character, which no mesh file can hold in a name");
     };
     check(mesh.materials, "the material name");
     check(mesh.textures, "the texture file name");

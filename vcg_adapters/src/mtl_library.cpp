@@ -62,14 +62,6 @@ size_t optionArguments(const std::string& option) {
     return 1;  // -blendu -blendv -bm -boost -cc -clamp -imfchan -texres -type
 }
 
-bool hasControlCharacter(const std::string& line) {
-    for (char c : line) {
-        const unsigned char u = static_cast<unsigned char>(c);
-        if ((u < 0x20 && c != '\t') || u == 0x7F) return true;
-    }
-    return false;
-}
-
 }  // namespace
 
 MtlLibrary readMtl(const std::string& text) {
@@ -87,7 +79,7 @@ MtlLibrary readMtl(const std::string& text) {
             if (++library.droppedCount <= kDroppedNamed)
                 library.dropped.push_back("line " + std::to_string(lineNumber) + " (" + keyword.substr(0, 40) + ")");
         };
-        if (words.size() < 2 || hasControlCharacter(line)) {
+        if (words.size() < 2 || holdsControlCharacter(line)) {
             drop();
             continue;
         }

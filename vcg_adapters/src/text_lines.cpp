@@ -54,10 +54,18 @@ void stripComment(std::string& line) {
     line = line.substr(from, to - from);
 }
 
+bool holdsControlCharacter(const std::string& text) {
+    for (char c : text) {
+        const unsigned char u = static_cast<unsigned char>(c);
+        if ((u < 0x20 && c != '\t') || u == 0x7F) return true;
+    }
+    return false;
+}
+
 const char* unwritableNameReason(const std::string& name, bool objOrMtl) {
+    if (holdsControlCharacter(name)) return "it holds a line break or another control character";
     for (size_t i = 0; i < name.size(); ++i) {
         const unsigned char c = static_cast<unsigned char>(name[i]);
-        if ((c < 0x20 && c != '\t') || c == 0x7F) return "it holds a line break or another control character";
         if (objOrMtl && c == '#' && i > 0 && isBlank(name[i - 1])) return "it holds a '#' after a blank, where a comment starts";
     }
     if (objOrMtl && !name.empty() && (isBlank(name.front()) || isBlank(name.back()))) return "it starts or ends with a blank";

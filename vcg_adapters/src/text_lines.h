@@ -25,6 +25,10 @@ std::string joinList(const std::vector<std::string>& items);
 // '#'), then the blanks at both ends.
 void stripComment(std::string& line);
 
+// Whether `text` holds a control character other than tab (a line break,
+// a form feed, an escape, ...).
+bool holdsControlCharacter(const std::string& text);
+
 // Why a name (material, texture or library file) cannot be written as the
 // rest of a line and be read back the same, or nullptr if it can: a control
 // character would end or bend the line. In OBJ and MTL (objOrMtl) blanks at
