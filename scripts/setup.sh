@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Installs everything drm needs on Debian bookworm and fetches MeshLab 2020.09's
-# headers and vcglib from Debian's `meshlab` source package into third_party/.
-# Idempotent: a second run only checks and returns in about a second.
+# Installs everything drm needs on Debian bookworm, fetches MeshLab 2020.09's
+# headers and vcglib from Debian's `meshlab` source package into third_party/,
+# and makes the Debian roots of MeshLab 2022.02 and 2025.07.
+# Idempotent: a second run only checks and returns in a few seconds.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -15,6 +16,7 @@ packages=(
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev
   xvfb xauth dpkg-dev imagemagick xdotool x11-apps
   qt5-image-formats-plugins   # MeshLab reads TGA, TIFF and WebP textures (duck.obj's duckCM.tga)
+  debootstrap   # scripts/meshlab-root.sh: Debian roots of newer MeshLab releases
   util-linux   # setpriv: the file-permission tests run as the user nobody
   assimp-testmodels   # tests/others_files: another project's test models, broken ones included
   clang libfuzzer-14-dev libclang-rt-14-dev
@@ -65,5 +67,13 @@ if [ ! -f "$meshlab_dir/vcglib/vcg/complex/complex.h" ]; then
   rm -rf "$meshlab_dir"
   (cd "$tmp/archives" && dpkg-source --no-check -x "meshlab_$meshlab_src_version.dsc" "$meshlab_dir" >/dev/null)
   [ -f "$meshlab_dir/vcglib/vcg/complex/complex.h" ] || { echo "setup: vcglib missing from the source package" >&2; exit 1; }
+fi
+# MeshLab 2022.02 and 2025.07, the releases people install today, each in a
+# Debian root with its compiler, Qt and sources (scripts/meshlab-root.sh;
+# cached outside the clone). DRM_SKIP_MESHLAB_RELEASES=1 leaves them out.
+if [ "${DRM_SKIP_MESHLAB_RELEASES:-0}" != 1 ]; then
+  for release in 2022.02 2025.07; do
+    bash "$here/scripts/meshlab-root.sh" make "$release"
+  done
 fi
 echo "setup: ok (MeshLab sources in ${meshlab_dir#$here/})"

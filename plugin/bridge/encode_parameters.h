@@ -6,7 +6,7 @@
 #ifndef DRM_MESHLAB_ENCODE_PARAMETERS_H
 #define DRM_MESHLAB_ENCODE_PARAMETERS_H
 
-#include <common/interfaces.h>
+#include "bridge/meshlab_api.h"
 
 #include <drm/drm.h>
 

@@ -59,7 +59,7 @@ std::vector<std::string> lostAttributes(const MeshModel& m, int kept, const drm:
         if (m.hasDataMask(a.mask)) lost.push_back(a.name);
     if (m.cm.en > 0) lost.push_back("edges");
     for (const Box& box : kBoxes)
-        if (box.ioMask != IoMask::IOM_VERTNORMAL && m.hasDataMask(box.dataMask) && !(kept & box.ioMask))
+        if (m.hasDataMask(box.dataMask) && !(kept & box.ioMask))
             lost.push_back(std::string(box.name) + " (not ticked)");
     if (!m.cm.textures.empty() && !(kept & (IoMask::IOM_WEDGTEXCOORD | IoMask::IOM_VERTTEXCOORD)))
         lost.push_back("texture file names (texture coordinates not ticked)");

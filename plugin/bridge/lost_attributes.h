@@ -6,7 +6,7 @@
 #ifndef DRM_MESHLAB_LOST_ATTRIBUTES_H
 #define DRM_MESHLAB_LOST_ATTRIBUTES_H
 
-#include <common/interfaces.h>
+#include "bridge/meshlab_api.h"
 
 #include <drm/drm.h>
 
@@ -30,8 +30,7 @@ int exportedAttributes(const MeshModel& m, int mask);
 // radii", "wedge colours", "polygonal faces (saved as their triangles)",
 // "vertex colours (not ticked)", ...), in a fixed order: what .drm files
 // cannot hold, what was not ticked in `kept`, and what `mesh` carried but
-// the encoder wrote no section for (`stats`). Normals are named only when
-// ticked and not kept: MeshLab computes them for every mesh it opens.
+// the encoder wrote no section for (`stats`).
 std::vector<std::string> lostAttributes(const MeshModel& m, int kept, const drm::Mesh& mesh,
                                         const drm::Stats& stats);
 

@@ -2,7 +2,7 @@
 #ifndef DRM_MESHLAB_PROGRESS_BRIDGE_H
 #define DRM_MESHLAB_PROGRESS_BRIDGE_H
 
-#include <common/interfaces.h>
+#include "bridge/meshlab_api.h"
 
 #include <drm/drm.h>
 
@@ -15,13 +15,15 @@ enum class ProgressStyle {
     StatusBar,
     // meshlabserver, which prints each label as it comes, without a
     // separator, and drops a call whose percentage equals the last one: each
-    // new stage once, as a line of its own ("drm: ranking\n").
+    // stage once per operation, as a line of its own ("drm: ranking\n"),
+    // through `cb`, or on stdout and into the -l log when `cb` is null (the
+    // server opens and saves files without a callback).
     Lines,
 };
 
 // A drm::Progress that forwards to `cb` in the given style. MeshLab's
 // callback returning false cancels the codec (it then throws drm::Error).
-// Empty when `cb` is null (meshlabserver opens and saves without one).
+// Empty when `cb` is null in the StatusBar style.
 drm::Progress progressTo(vcg::CallBackPos* cb, ProgressStyle style);
 
 // The style of the program we run in (host.h).

@@ -1,41 +1,111 @@
 #include "filter_drm/filter_drm.h"
 
 #include "bridge/encode_parameters.h"
-#include "bridge/encoding.h"
 #include "bridge/error_message.h"
 #include "bridge/host.h"
 #include "bridge/log_text.h"
-#include "bridge/progress_bridge.h"
 #include "filter_drm/rank_colouring.h"
 
-#include <drm/drm.h>
-#include <drm_vcg/vcg_mesh.h>
+namespace {
 
-#include <new>
+// The progress callback leaves the last stage in the status bar.
+struct StatusBarReset {
+    ~StatusBarReset() { drm_meshlab::clearStatusBar(); }
+};
+
+std::string cannotRank(const std::string& name) {
+    return std::string(drm_meshlab::kRankFilterName) + ": cannot rank " + name + ": " +
+           drm_meshlab::currentErrorMessage();
+}
+
+const char* const kNoCurrentMesh = "Colorize Faces by Distance Rank: there is no current mesh";
+
+}  // namespace
+
+QString DrmFilterPlugin::pluginName() const { return "FilterDRM"; }
+
+#if DRM_MESHLAB_API >= 2021
+
+DrmFilterPlugin::DrmFilterPlugin() {
+    typeList = {FP_RANK_COLOURS};
+    for (ActionIDType type : types()) actionList.push_back(new QAction(filterName(type), this));
+}
+
+QString DrmFilterPlugin::filterName(ActionIDType filter) const {
+    return filter == FP_RANK_COLOURS ? QString(drm_meshlab::kRankFilterName) : QString();
+}
+
+QString DrmFilterPlugin::pythonFilterName(ActionIDType filter) const {
+    return filter == FP_RANK_COLOURS ? QString(drm_meshlab::kRankFilterPythonName) : QString();
+}
+
+QString DrmFilterPlugin::filterInfo(ActionIDType filter) const {
+    return filter == FP_RANK_COLOURS ? QString::fromStdString(drm_meshlab::rankFilterHelpHtml()) : QString();
+}
+
+// FaceColoring puts the filter in Filters > Color Creation and Processing, and
+// makes MeshLab switch the view to per-face colour after it ran.
+FilterPlugin::FilterClass DrmFilterPlugin::getClass(const QAction* /*action*/) const {
+    return FilterPlugin::FaceColoring;
+}
+
+int DrmFilterPlugin::getRequirements(const QAction* /*action*/) {
+    return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+}
+
+// Only faces are needed; colour and quality are created by the filter.
+int DrmFilterPlugin::getPreConditions(const QAction* /*action*/) const { return MeshModel::MM_FACENUMBER; }
+
+int DrmFilterPlugin::postCondition(const QAction* /*action*/) const {
+    return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+}
+
+FilterPlugin::FilterArity DrmFilterPlugin::filterArity(const QAction* /*action*/) const {
+    return FilterPlugin::SINGLE_MESH;
+}
+
+RichParameterList DrmFilterPlugin::initParameterList(const QAction* /*action*/, const MeshModel& /*m*/) {
+    RichParameterList parameters;
+    drm_meshlab::addQuantizationAndPredictor(parameters);
+    return parameters;
+}
+
+std::map<std::string, QVariant> DrmFilterPlugin::applyFilter(const QAction* /*action*/,
+                                                             const RichParameterList& parameters, MeshDocument& md,
+                                                             unsigned int& postConditionMask, vcg::CallBackPos* cb) {
+    MeshModel* m = md.mm();
+    if (m == nullptr) throw MLException(kNoCurrentMesh);
+    const StatusBarReset statusBarReset;
+    drm_meshlab::RankColouringReport report;
+    try {
+        report = drm_meshlab::colourMeshByRank(*m, parameters, cb);
+    } catch (...) {
+        const std::string message = cannotRank(m->label().toStdString());
+        log(GLLogStream::WARNING, message);
+        throw MLException(QString::fromStdString(message));
+    }
+    postConditionMask = MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+    log(report.summary);
+    // The log pane takes HTML: a legend with colour swatches, the only one a
+    // user gets, since the 3D view has none.
+    log(drm_meshlab::rankLegendHtml(report.facesPerBucket));
+    log(report.histogram);
+    return {};
+}
+
+#else
 
 DrmFilterPlugin::DrmFilterPlugin() {
     typeList << FP_RANK_COLOURS;
     for (FilterIDType type : typeList) actionList << new QAction(filterName(type), this);
 }
 
-QString DrmFilterPlugin::pluginName() const { return "FilterDRM"; }
-
-// The name is how .mlx scripts refer to the filter: it must stay unique
-// across MeshLab and must not change.
 QString DrmFilterPlugin::filterName(FilterIDType filter) const {
-    switch (filter) {
-        case FP_RANK_COLOURS:
-            return "Colorize Faces by Distance Rank";
-    }
-    return QString();
+    return filter == FP_RANK_COLOURS ? QString(drm_meshlab::kRankFilterName) : QString();
 }
 
 QString DrmFilterPlugin::filterInfo(FilterIDType filter) const {
-    switch (filter) {
-        case FP_RANK_COLOURS:
-            return QString::fromStdString(drm_meshlab::rankFilterHelpHtml());
-    }
-    return QString();
+    return filter == FP_RANK_COLOURS ? QString::fromStdString(drm_meshlab::rankFilterHelpHtml()) : QString();
 }
 
 // FaceColoring puts the filter in Filters > Color Creation and Processing, and
@@ -72,41 +142,27 @@ bool DrmFilterPlugin::fail(const std::string& message) {
 bool DrmFilterPlugin::applyFilter(QAction* /*action*/, MeshDocument& md, const RichParameterList& parameters,
                                   vcg::CallBackPos* cb) {
     MeshModel* m = md.mm();
-    if (m == nullptr) return fail("Colorize Faces by Distance Rank: there is no current mesh");
-    const std::string name = m->label().toStdString();
-    // The progress callback leaves the last stage in the status bar.
-    struct StatusBarReset {
-        ~StatusBarReset() { drm_meshlab::clearStatusBar(); }
-    } statusBarReset;
+    if (m == nullptr) return fail(kNoCurrentMesh);
+    const StatusBarReset statusBarReset;
+    drm_meshlab::RankColouringReport report;
     try {
-        drm::EncodeOptions options = drm_meshlab::encodeOptionsFrom(parameters);
-        options.connectivity = drm::ConnectivityCoder::Ranks;  // the ranks are what the colours show
-        options.progress = drm_meshlab::progressTo(cb);
-        const drm::Mesh mesh = drm::vcgio::fromVcg(m->cm);
-        const drm::Encoded encoded = drm_meshlab::encodeMesh(mesh, options);
-
-        // MeshLab enables the requirements before running a filter; this
-        // keeps the filter correct when called some other way.
-        m->updateDataMask(MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY);
-        const std::vector<uint64_t> facesPerBucket = drm_meshlab::colourFacesByRank(m->cm, encoded.faceRank);
-
-        Log("Distance ranks of %s: connectivity %s bpv (%llu bytes for %llu vertices); %s",
-            name.c_str(), drm_meshlab::twoDecimals(encoded.stats.connectivityBitsPerVertex()).c_str(),
-            (unsigned long long)encoded.stats.connectivityBytes, (unsigned long long)encoded.stats.vertices,
-            drm_meshlab::statsSummary(encoded.stats).c_str());
-        // The GUI's log pane takes HTML (and collapses spaces): a legend with
-        // colour swatches, the only one a user gets, since the 3D view has
-        // none. meshlabserver prints the log as it is: aligned plain text.
-        if (drm_meshlab::inMeshlabserver()) {
-            for (const std::string& line : drm_meshlab::rankLegendText(facesPerBucket)) Log(line);
-        } else {
-            Log(drm_meshlab::rankLegendHtml(facesPerBucket));
-        }
-        Log(drm_meshlab::rankHistogramText(encoded.stats));
-        return true;
+        report = drm_meshlab::colourMeshByRank(*m, parameters, cb);
     } catch (...) {
-        return fail("Colorize Faces by Distance Rank: cannot rank " + name + ": " + drm_meshlab::currentErrorMessage());
+        return fail(cannotRank(m->label().toStdString()));
     }
+    Log(report.summary);
+    // The GUI's log pane takes HTML (and collapses spaces): a legend with
+    // colour swatches, the only one a user gets, since the 3D view has none.
+    // meshlabserver prints the log as it is: aligned plain text.
+    if (drm_meshlab::inMeshlabserver()) {
+        for (const std::string& line : drm_meshlab::rankLegendText(report.facesPerBucket)) Log(line);
+    } else {
+        Log(drm_meshlab::rankLegendHtml(report.facesPerBucket));
+    }
+    Log(report.histogram);
+    return true;
 }
+
+#endif
 
 MESHLAB_PLUGIN_NAME_EXPORTER(DrmFilterPlugin)

@@ -1,8 +1,10 @@
-// Painting faces of a MeshLab mesh by rank (the log lines about it: bridge/log_text.h).
+// Painting the faces of a MeshLab mesh by distance rank: the work of the
+// "Colorize Faces by Distance Rank" filter, for either plugin API (the log
+// text itself: bridge/log_text.h).
 #ifndef DRM_MESHLAB_RANK_COLOURING_H
 #define DRM_MESHLAB_RANK_COLOURING_H
 
-#include <common/interfaces.h>
+#include "bridge/meshlab_api.h"
 
 #include <drm/drm.h>
 
@@ -18,6 +20,24 @@ namespace drm_meshlab {
 // Per-face colour and quality must be enabled. Returns the number of faces
 // in each palette bucket. Throws drm::Error if the counts disagree.
 std::vector<uint64_t> colourFacesByRank(CMeshO& cm, const std::vector<uint32_t>& faceRank);
+
+// What the filter logs after colouring a mesh.
+struct RankColouringReport {
+    std::string summary;        // "Distance ranks of NAME: connectivity 1.23 bpv (...)"
+    std::vector<uint64_t> facesPerBucket;  // for the legend (log_text.h)
+    std::string histogram;      // rankHistogramText
+};
+
+// Encodes `m` with the rank coder and the options in `parameters`, enables
+// face colour and quality and fills them by rank. Throws drm::Error (bad
+// parameter, mesh the codec refuses, cancel) with `m`'s faces unchanged.
+RankColouringReport colourMeshByRank(MeshModel& m, const RichParameterList& parameters, vcg::CallBackPos* cb);
+
+// The filter's name in menus and .mlx scripts: unique across MeshLab, and
+// never to change.
+extern const char* const kRankFilterName;  // "Colorize Faces by Distance Rank"
+// Its name in PyMeshLab (MeshLab 2021.05+): lower case, words joined by _.
+extern const char* const kRankFilterPythonName;
 
 }  // namespace drm_meshlab
 

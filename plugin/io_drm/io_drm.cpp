@@ -1,29 +1,13 @@
 #include "io_drm/io_drm.h"
 
 #include "bridge/encode_parameters.h"
-#include "bridge/encoding.h"
-#include "bridge/error_message.h"
 #include "bridge/host.h"
 #include "bridge/lost_attributes.h"
-#include "bridge/progress_bridge.h"
+#include "io_drm/io_drm_work.h"
 
-#include <drm/drm.h>
-#include <drm_vcg/file_io.h>
-#include <drm_vcg/vcg_attributes.h>
-#include <drm_vcg/vcg_mesh.h>
-
-#include <QFile>
-#include <QFileInfo>
-
-#include <algorithm>
-#include <new>
-#include <vector>
+#include <cstdio>
 
 namespace {
-
-std::string localPath(const QString& fileName) { return QFile::encodeName(fileName).toStdString(); }
-
-std::string shownName(const QString& fileName) { return QFileInfo(fileName).fileName().toStdString(); }
 
 // Clears the status bar when an open or save ends, however it ends: the
 // progress callback leaves the codec's last stage there otherwise.
@@ -35,20 +19,82 @@ struct StatusBarReset {
 
 QString DrmIOPlugin::pluginName() const { return "IODRM"; }
 
+#if DRM_MESHLAB_API >= 2021
+
+std::list<FileFormat> DrmIOPlugin::importFormats() const {
+    return {FileFormat(drm_meshlab::kDrmDescription, drm_meshlab::kDrmExtension)};
+}
+
+std::list<FileFormat> DrmIOPlugin::exportFormats() const {
+    return {FileFormat(drm_meshlab::kDrmDescription, drm_meshlab::kDrmExtension)};
+}
+
+// Every attribute a .drm file keeps is ticked: the dialog offers only those
+// the mesh has, and what the user unticks is named in a note after saving.
+void DrmIOPlugin::exportMaskCapability(const QString& /*format*/, int& capability, int& defaultBits) const {
+    capability = drm_meshlab::kExportCapability;
+    defaultBits = capability;
+}
+
+RichParameterList DrmIOPlugin::initSaveParameter(const QString& /*format*/, const MeshModel& /*m*/) const {
+    RichParameterList parameters;
+    drm_meshlab::addQuantizationAndPredictor(parameters);
+    drm_meshlab::addKeepVertexOrder(parameters);
+    drm_meshlab::addVerify(parameters);
+    return parameters;
+}
+
+void DrmIOPlugin::logLine(GLLogStream::Levels level, const std::string& line) const { log(level, line); }
+
+void DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshModel& m, int& mask,
+                       const RichParameterList& /*parameters*/, vcg::CallBackPos* cb) {
+    const StatusBarReset statusBarReset;
+    drm_meshlab::IoReport report;
+    try {
+        mask = drm_meshlab::openDrm(fileName, m, cb, report);
+    } catch (...) {
+        const std::string message = drm_meshlab::failureMessage("open", fileName);
+        logLine(GLLogStream::WARNING, message);
+        throw MLException(QString::fromStdString(message));
+    }
+    // Notes, not errors: MeshLab's WARNING level is shown in red.
+    for (const std::string& note : report.notes) logLine(GLLogStream::FILTER, note);
+    logLine(GLLogStream::FILTER, report.summary);
+}
+
+void DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshModel& m, const int mask,
+                       const RichParameterList& parameters, vcg::CallBackPos* cb) {
+    const StatusBarReset statusBarReset;
+    drm_meshlab::IoReport report;
+    try {
+        drm_meshlab::saveDrm(fileName, m, mask, parameters, cb, report);
+    } catch (...) {
+        const std::string message = drm_meshlab::failureMessage("save", fileName);
+        logLine(GLLogStream::WARNING, message);
+        throw MLException(QString::fromStdString(message));
+    }
+    for (const std::string& note : report.notes) logLine(GLLogStream::FILTER, note);
+    // What the file does not keep is data the user may not expect to lose:
+    // MeshLab shows it after saving, and logs it.
+    if (!report.notKept.empty()) reportWarning(QString::fromStdString(report.notKept));
+    logLine(GLLogStream::FILTER, report.summary);
+}
+
+#else
+
 QList<MeshIOInterface::Format> DrmIOPlugin::importFormats() const {
-    return {Format("Distance-ranked compressed mesh", tr("DRM"))};
+    return {Format(drm_meshlab::kDrmDescription, drm_meshlab::kDrmExtension)};
 }
 
 QList<MeshIOInterface::Format> DrmIOPlugin::exportFormats() const {
-    return {Format("Distance-ranked compressed mesh", tr("DRM"))};
+    return {Format(drm_meshlab::kDrmDescription, drm_meshlab::kDrmExtension)};
 }
 
-// The attributes a .drm file keeps. As MeshLab's PLY export does, normals
-// are offered but not ticked by default: MeshLab computes them for every
-// mesh it opens, so they are seldom the file's own.
+// Every attribute a .drm file keeps is ticked: the dialog offers only those
+// the mesh has, and what the user unticks is named in a note after saving.
 void DrmIOPlugin::GetExportMaskCapability(QString& /*format*/, int& capability, int& defaultBits) const {
     capability = drm_meshlab::kExportCapability;
-    defaultBits = capability & ~vcg::tri::io::Mask::IOM_VERTNORMAL;
+    defaultBits = capability;
 }
 
 void DrmIOPlugin::initSaveParameter(const QString& /*format*/, MeshModel& /*m*/, RichParameterList& parameters) {
@@ -60,85 +106,47 @@ void DrmIOPlugin::initSaveParameter(const QString& /*format*/, MeshModel& /*m*/,
 bool DrmIOPlugin::fail(const std::string& message) {
     errorMessage = QString::fromStdString(message);
     Log(GLLogStream::WARNING, message);
-    qWarning("drm: error: %s", message.c_str());
+    std::fprintf(stderr, "drm: error: %s\n", message.c_str());
     return false;
 }
 
-void DrmIOPlugin::report(const std::string& line) {
-    Log(GLLogStream::FILTER, line);
+// The GUI's log pane; in meshlabserver, which shows no IO plugin's log,
+// stdout and the -l log file too.
+void DrmIOPlugin::logLine(GLLogStream::Levels level, const std::string& line) {
+    Log(level, line);
     drm_meshlab::printToServerOutput(line);
 }
 
 bool DrmIOPlugin::open(const QString& /*format*/, const QString& fileName, MeshModel& m, int& mask,
                        const RichParameterList& /*parameters*/, vcg::CallBackPos* cb, QWidget* /*parent*/) {
-    const std::string name = shownName(fileName);
     const StatusBarReset statusBarReset;
+    drm_meshlab::IoReport report;
     try {
-        const std::vector<uint8_t> bytes = drm::vcgio::readFileBytes(localPath(fileName));
-        const drm::Decoded decoded = drm::decode(bytes, drm_meshlab::progressTo(cb));
-        drm::vcgio::toVcg(decoded.mesh, m.cm);
-        // Optional components first (MeshLab's own importers do the same),
-        // then the values.
-        int attributeMask = drm::vcgio::ioMaskOf(decoded.mesh);
-        if (!decoded.mesh.cornerNormals.empty()) attributeMask |= vcg::tri::io::Mask::IOM_VERTNORMAL;
-        m.Enable(attributeMask);
-        const int restored = drm::vcgio::attributesToVcg(decoded.mesh, m.cm);
-        // Per-vertex texture coordinates: MeshLab's exporters and filters
-        // read wedge ones once a texture is named (meshlabserver's PLY export
-        // of such a mesh asserts on disabled wedges), so the wedges carry a
-        // copy, as MeshLab's own PLY importer gives.
-        if (!decoded.mesh.texCoords.empty() && decoded.mesh.cornerTexCoords.empty()) {
-            m.updateDataMask(MeshModel::MM_WEDGTEXCOORD);
-            for (CFaceO& face : m.cm.face)
-                if (!face.IsD())
-                    for (int k = 0; k < 3; ++k) face.WT(k) = face.V(k)->T();
-        }
-        mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX | restored;
-        // Texture names are relative to the .drm file, as for PLY and OBJ.
-        for (std::string& texture : m.cm.textures) std::replace(texture.begin(), texture.end(), '\\', '/');
-        for (const std::string& note : drm_meshlab::openNotes(decoded.mesh, QFileInfo(fileName).absolutePath()))
-        {
-            const std::string line = "drm: note: " + name + ": " + note;
-            Log(GLLogStream::FILTER, line);  // a note, not an error (WARNING is red)
-            qInfo("%s", line.c_str());       // meshlabserver prints no log
-        }
-        report("drm: opened " + name + ": " + drm_meshlab::statsSummary(decoded.stats));
-        return true;
+        mask = drm_meshlab::openDrm(fileName, m, cb, report);
     } catch (...) {
-        m.cm.Clear();
-        return fail("cannot open " + name + ": " + drm_meshlab::currentErrorMessage());
+        return fail(drm_meshlab::failureMessage("open", fileName));
     }
+    // Notes, not errors: MeshLab's WARNING level is shown in red.
+    for (const std::string& note : report.notes) logLine(GLLogStream::FILTER, note);
+    logLine(GLLogStream::FILTER, report.summary);
+    return true;
 }
 
 bool DrmIOPlugin::save(const QString& /*format*/, const QString& fileName, MeshModel& m, const int mask,
                        const RichParameterList& parameters, vcg::CallBackPos* cb, QWidget* /*parent*/) {
-    const std::string name = shownName(fileName);
     const StatusBarReset statusBarReset;
+    drm_meshlab::IoReport report;
     try {
-        drm::EncodeOptions options = drm_meshlab::encodeOptionsFrom(parameters);
-        options.progress = drm_meshlab::progressTo(cb);
-        drm::Mesh mesh = drm::vcgio::fromVcg(m.cm);
-        const int kept = drm_meshlab::exportedAttributes(m, mask);
-        drm::vcgio::attributesFromVcg(m.cm, kept, mesh);
-        const drm::Encoded encoded = drm_meshlab::encodeMesh(mesh, options);
-        // Atomic: an existing file is replaced only by a complete new one,
-        // with its mode and owner, through a symbolic link, and only if the
-        // user may write it (drm_vcg/file_io.h).
-        drm::vcgio::writeFileAtomically(localPath(fileName), encoded.bytes);
-
-        const std::vector<std::string> lost = drm_meshlab::lostAttributes(m, kept, mesh, encoded.stats);
-        if (!lost.empty()) {
-            const std::string note = "drm: note: " + name + " does not keep the mesh's " +
-                                     drm_meshlab::joinedList(lost);
-            // A note, not an error: MeshLab's WARNING level is shown in red.
-            Log(GLLogStream::FILTER, note);
-            qInfo("%s", note.c_str());
-        }
-        report("drm: saved " + name + ": " + drm_meshlab::statsSummary(encoded.stats));
-        return true;
+        drm_meshlab::saveDrm(fileName, m, mask, parameters, cb, report);
     } catch (...) {
-        return fail("cannot save " + name + ": " + drm_meshlab::currentErrorMessage());
+        return fail(drm_meshlab::failureMessage("save", fileName));
     }
+    for (const std::string& note : report.notes) logLine(GLLogStream::FILTER, note);
+    if (!report.notKept.empty()) logLine(GLLogStream::FILTER, report.notKept);
+    logLine(GLLogStream::FILTER, report.summary);
+    return true;
 }
+
+#endif
 
 MESHLAB_PLUGIN_NAME_EXPORTER(DrmIOPlugin)

@@ -1,15 +1,42 @@
-// MeshLab 2020.09 IO plugin for .drm files: File > Import Mesh opens them,
-// File > Export Mesh As writes them with the codec options in the save
-// dialog. A thin adapter: the codec does the work, drm_vcg converts meshes
-// and writes files atomically, this class talks to MeshLab.
+// MeshLab IO plugin for .drm files: File > Import Mesh opens them, File >
+// Export Mesh As writes them with the codec options in the save dialog. A
+// thin adapter: the codec does the work, drm_vcg converts meshes and writes
+// files atomically, io_drm_work.h holds what open and save do, and this class
+// speaks the plugin API of the MeshLab it is built for (bridge/meshlab_api.h).
 #ifndef DRM_MESHLAB_IO_DRM_H
 #define DRM_MESHLAB_IO_DRM_H
 
-#include <common/interfaces.h>  // first: it includes GLEW before any GL header
+#include "bridge/meshlab_api.h"  // first: MeshLab includes GLEW before any GL header
 
 #include <QObject>
 
 #include <string>
+
+#if DRM_MESHLAB_API >= 2021
+
+class DrmIOPlugin : public QObject, public IOPlugin {
+    Q_OBJECT
+    MESHLAB_PLUGIN_IID_EXPORTER(IO_PLUGIN_IID)
+    Q_INTERFACES(IOPlugin)
+
+public:
+    QString pluginName() const override;
+    std::list<FileFormat> importFormats() const override;
+    std::list<FileFormat> exportFormats() const override;
+    void exportMaskCapability(const QString& format, int& capability, int& defaultBits) const override;
+    RichParameterList initSaveParameter(const QString& format, const MeshModel& m) const override;
+
+    // Both throw MLException with the sentence the user sees.
+    void open(const QString& format, const QString& fileName, MeshModel& m, int& mask,
+              const RichParameterList& parameters, vcg::CallBackPos* cb = nullptr) override;
+    void save(const QString& format, const QString& fileName, MeshModel& m, const int mask,
+              const RichParameterList& parameters, vcg::CallBackPos* cb = nullptr) override;
+
+private:
+    void logLine(GLLogStream::Levels level, const std::string& line) const;
+};
+
+#else
 
 class DrmIOPlugin : public QObject, public MeshIOInterface {
     Q_OBJECT
@@ -35,9 +62,9 @@ private:
     // it on stderr: meshlabserver prints neither errorMessage after a failed
     // -i open or save, nor the log of an IO plugin it did not open with.
     bool fail(const std::string& message);
-    // Logs LINE (the GUI's log pane) and, in meshlabserver, which shows no
-    // IO plugin's log, prints it on stdout and into the -l log file.
-    void report(const std::string& line);
+    void logLine(GLLogStream::Levels level, const std::string& line);
 };
+
+#endif
 
 #endif  // DRM_MESHLAB_IO_DRM_H

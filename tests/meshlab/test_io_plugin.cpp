@@ -11,7 +11,9 @@
 #include "bridge/encode_parameters.h"
 
 #include <drm/drm.h>
+#include <drm_vcg/file_io.h>
 #include <drm_vcg/vcg_mesh.h>
+#include <vcg/complex/algorithms/update/normal.h>
 
 #include <gtest/gtest.h>
 
@@ -62,6 +64,9 @@ struct Fixture {
     Fixture() : model(document.addNewMesh("", "grid")) {
         application();
         drm::vcgio::toVcg(grid(12), model->cm);
+        // The normals MeshLab gives a mesh opened from a file without any.
+        vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(model->cm);
+        vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(model->cm);
         plugin.setLog(&log);
         plugin.initSaveParameter("DRM", *model, parameters);
     }
@@ -71,8 +76,8 @@ struct Fixture {
     DrmIOPlugin plugin;
     RichParameterList parameters;
 
-    bool save(const std::string& path, vcg::CallBackPos* cb = nullptr) {
-        return plugin.save("DRM", QString::fromStdString(path), *model, 0, parameters, cb, nullptr);
+    bool save(const std::string& path, vcg::CallBackPos* cb = nullptr, int mask = 0) {
+        return plugin.save("DRM", QString::fromStdString(path), *model, mask, parameters, cb, nullptr);
     }
     // Log entries containing TEXT, with their level.
     std::vector<std::pair<int, std::string>> entries(const std::string& text) const {
@@ -115,6 +120,28 @@ TEST(IoPlugin, ANoteAboutLostAttributesIsNotShownAsAWarning) {
     ASSERT_EQ(notes.size(), 1u);
     EXPECT_NE(notes[0].first, int(GLLogStream::WARNING)) << "MeshLab shows WARNING entries in red, as errors";
     EXPECT_TRUE(f.entries("drm: note:").size() == 1u);
+}
+
+TEST(IoPlugin, NormalsMeshLabComputedAreLeftOutWithANote) {
+    Fixture f;
+    ScratchDir dir;
+    ASSERT_TRUE(f.save(dir.file("grid.drm"), nullptr, vcg::tri::io::Mask::IOM_VERTNORMAL));
+    EXPECT_EQ(f.entries("drm: note: grid.drm leaves out the vertex normals: they are the ones MeshLab computes").size(),
+              1u);
+    EXPECT_TRUE(f.entries("does not keep").empty()) << "computed normals are not lost data";
+    EXPECT_TRUE(drm::decode(drm::vcgio::readFileBytes(dir.file("grid.drm"))).mesh.normals.empty());
+}
+
+TEST(IoPlugin, NormalsOfTheMeshsOwnAreKeptWhenTicked) {
+    Fixture f;
+    // One normal turned by about 1 degree: no longer the computed one.
+    f.model->cm.vert[20].N() = (f.model->cm.vert[20].N().Normalize() + vcg::Point3f(0.02f, 0, 0)).Normalize();
+    ScratchDir dir;
+    ASSERT_TRUE(f.save(dir.file("own.drm"), nullptr, vcg::tri::io::Mask::IOM_VERTNORMAL));
+    EXPECT_TRUE(f.entries("leaves out the vertex normals").empty());
+    EXPECT_EQ(drm::decode(drm::vcgio::readFileBytes(dir.file("own.drm"))).mesh.normals.size(), 3u * 169u);
+    ASSERT_TRUE(f.save(dir.file("unticked.drm")));
+    EXPECT_EQ(f.entries("drm: note: unticked.drm does not keep the mesh's vertex normals (not ticked)").size(), 1u);
 }
 
 TEST(IoPlugin, SaveAndOpenLeaveTheStatusBarEmpty) {

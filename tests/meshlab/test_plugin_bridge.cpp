@@ -1,6 +1,7 @@
 // The plugins' shared layer without MeshLab running: the sentences and HTML
 // they log, the progress labels, the status bar, the dialog's parameters.
 // (meshlab_test.sh runs the plugins inside the real MeshLab.)
+#include "bridge/computed_normals.h"
 #include "bridge/encode_parameters.h"
 #include "bridge/encoding.h"
 #include "bridge/host.h"
@@ -9,6 +10,8 @@
 
 #include <drm/drm.h>
 #include <drm_vcg/rank_palette.h>
+#include <drm_vcg/vcg_mesh.h>
+#include <vcg/complex/algorithms/update/normal.h>
 
 #include <gtest/gtest.h>
 
@@ -160,6 +163,16 @@ TEST(Progress, MeshlabserverGetsEachStageOnceOnALineOfItsOwn) {
     EXPECT_NE(g_calls[1].first, g_calls[2].first);
 }
 
+TEST(Progress, StagesThatComeBackAreShownOnce) {
+    g_calls.clear();
+    // The encoder's attempts (both predictors) go through stages again.
+    const drm::Progress progress = drm_meshlab::progressTo(recordCall, drm_meshlab::ProgressStyle::Lines);
+    for (const char* stage : {"predictor", "ranking", "writing", "predictor", "ranking", "writing"})
+        progress(0.5, stage);
+    ASSERT_EQ(g_calls.size(), 3u);
+    EXPECT_EQ(g_calls[2].second, "drm: writing\n");
+}
+
 TEST(Progress, TheGuiGetsPercentagesAndBareLabels) {
     g_calls.clear();
     const drm::Progress progress = drm_meshlab::progressTo(recordCall, drm_meshlab::ProgressStyle::StatusBar);
@@ -210,4 +223,64 @@ TEST(ExportDialog, HelpIsShortAndErrorsUseTheLabels) {
         EXPECT_EQ(std::string(e.what()), "Quantization bits must be between " + std::to_string(drm::kMinQuantizationBits) +
                                              " and " + std::to_string(drm::kMaxQuantizationBits) + ", not 0");
     }
+}
+
+namespace {
+
+// A cube of 24 vertices, four per side (as a file with a normal per side
+// stores it), with the normals MeshLab computes when it opens it.
+void makeSidedCube(CMeshO& cm) {
+    drm::Mesh mesh;
+    const int sides[6][4][3] = {{{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}, {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                                {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}}, {{0, 1, 0}, {0, 1, 1}, {1, 1, 1}, {1, 1, 0}},
+                                {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}};
+    for (int side = 0; side < 6; ++side) {
+        for (int k = 0; k < 4; ++k)
+            for (int axis = 0; axis < 3; ++axis) mesh.positions.push_back(float(sides[side][k][axis]));
+        const uint32_t first = uint32_t(4 * side);
+        mesh.triangles.insert(mesh.triangles.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
+    }
+    drm::vcgio::toVcg(mesh, cm);
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(cm);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(cm);
+}
+
+}  // namespace
+
+TEST(ComputedNormals, MeshLabsOwnNormalsAreRecognised) {
+    CMeshO cm;
+    makeSidedCube(cm);
+    EXPECT_TRUE(drm_meshlab::normalsAreComputedFromFaces(cm, false));
+    // Welded into 8 corners, each vertex would get the mean of three sides:
+    // the sides' normals are then the file's own.
+    EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, true));
+}
+
+TEST(ComputedNormals, ATurnedNormalIsTheMeshsOwn) {
+    const double turn = 2 * drm_meshlab::kComputedNormalTolerance;
+    {
+        CMeshO cm;
+        makeSidedCube(cm);
+        cm.vert[5].N() = (cm.vert[5].N().Normalize() + vcg::Point3f(float(turn), 0, 0)).Normalize();
+        EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, false));
+    }
+    {
+        CMeshO cm;
+        makeSidedCube(cm);
+        cm.vert[5].N() = (cm.vert[5].N().Normalize() + vcg::Point3f(float(turn / 4), 0, 0)).Normalize();
+        EXPECT_TRUE(drm_meshlab::normalsAreComputedFromFaces(cm, false)) << "within the tolerance";
+    }
+    {
+        CMeshO cm;
+        makeSidedCube(cm);
+        cm.vert[5].N() = vcg::Point3f(0, 0, 0);
+        EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, false));
+    }
+}
+
+TEST(ComputedNormals, APointCloudsNormalsAreItsOwn) {
+    CMeshO cm;
+    makeSidedCube(cm);
+    for (CFaceO& f : cm.face) vcg::tri::Allocator<CMeshO>::DeleteFace(cm, f);
+    EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, false));
 }
