@@ -41,7 +41,7 @@ need_root() {
 # Packages inside the root. meshlab with its recommends: without them half of
 # MeshLab's own plugins fail to load (libgomp, muparser, qhull).
 build_packages=(g++ make cmake qtbase5-dev qtbase5-dev-tools libqt5opengl5-dev libglew-dev
-                libeigen3-dev libflann-dev liblz4-dev xz-utils xvfb xauth x11-apps)
+                libeigen3-dev libflann-dev liblz4-dev xz-utils xvfb xauth x11-apps xdotool)
 
 make_root() {
   local release=$1 suite dir log apt_opts

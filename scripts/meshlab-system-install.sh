@@ -2,11 +2,14 @@
 # Usage: sudo scripts/meshlab-system-install.sh [PLUGIN_DIR]
 #        sudo scripts/meshlab-system-install.sh --remove
 #
-# Installs drm's MeshLab plugins (libio_drm.so, libfilter_drm.so, from
-# PLUGIN_DIR, default build/plugins) into the system MeshLab 2020.09's plugin
-# folder, the only one /usr/bin/meshlab and meshlabserver search. --remove
-# takes them out again. Running it twice changes nothing the second time.
-# Without root, use scripts/meshlab-user-install.sh PREFIX instead.
+# Installs drm's MeshLab plugins (libio_drm.so, libfilter_drm.so) into the
+# system MeshLab's plugin folder. PLUGIN_DIR defaults to the build for the
+# installed MeshLab's release (Debian's meshlab package): build/plugins for
+# 2020.09, build-meshlab-RELEASE/plugins for later ones (MeshLab loads only
+# plugins built for its own release). --remove takes them out again. Running
+# it twice changes nothing the second time. Without root:
+# scripts/meshlab-extra-plugins-install.sh (2021.05 on) or
+# scripts/meshlab-user-install.sh PREFIX (2020.09).
 # MESHLAB_PLUGIN_DIR overrides the target folder (for a MeshLab elsewhere).
 set -euo pipefail
 
@@ -17,9 +20,10 @@ our_plugins=(libio_drm.so libfilter_drm.so)
 fail() { echo "meshlab-system-install: $*" >&2; exit 1; }
 
 if [ "${1:-}" = "-h" ] || [ "${1:-}" = "--help" ]; then
-  echo "usage: sudo $0 [PLUGIN_DIR | --remove]   (PLUGIN_DIR defaults to $here/build/plugins)"
+  echo "usage: sudo $0 [PLUGIN_DIR | --remove]   (PLUGIN_DIR defaults to the build for the installed MeshLab)"
   echo "  Installs drm's plugins into the system MeshLab ($target); --remove takes them out."
-  echo "  Without root: scripts/meshlab-user-install.sh PREFIX."
+  echo "  Without root: scripts/meshlab-extra-plugins-install.sh (MeshLab 2021.05 on), or"
+  echo "  scripts/meshlab-user-install.sh PREFIX (MeshLab 2020.09)."
   exit 0
 fi
 [ $# -le 1 ] || fail "usage: $0 [PLUGIN_DIR | --remove]"
@@ -32,7 +36,12 @@ if [ "${1:-}" = "--remove" ]; then
   exit 0
 fi
 
-plugins_from=${1:-$here/build/plugins}
+installed=$(dpkg-query -W -f='${Version}' meshlab 2>/dev/null || true)
+case "${installed:0:7}" in
+  ""|2020.09) default_plugins="$here/build/plugins" ;;
+  *) default_plugins="$here/build-meshlab-${installed:0:7}/plugins" ;;
+esac
+plugins_from=${1:-$default_plugins}
 for p in "${our_plugins[@]}"; do
   [ -f "$plugins_from/$p" ] || fail "$plugins_from/$p not found: build drm first (scripts/build.sh)"
 done

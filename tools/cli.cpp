@@ -153,14 +153,7 @@ drm::EncodeOptions encodeOptionsFrom(const Arguments& args) {
 std::vector<std::string> attributesNotKept(const drm::Mesh& mesh, const drm::EncodeOptions& options,
                                            const drm::Stats& stats) {
     uint32_t kept = 0;
-    for (const drm::Stats::AttributeSize& section : stats.attributeSizes) {
-        try {
-            kept |= drm::parseAttributes(section.name);
-        } catch (const drm::Error&) {
-            // A section this tool has no name for: it keeps something, not
-            // one of the attributes asked for.
-        }
-    }
+    for (const drm::Stats::AttributeSize& section : stats.attributeSizes) kept |= drm::sectionAttributes(section.name);
     const uint32_t lost = drm::attributesOf(mesh) & options.attributes & ~kept;
     if (lost == 0) return {};
     std::string names = drm::attributesName(lost);

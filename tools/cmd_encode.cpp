@@ -92,6 +92,9 @@ const char* const kEncodeHelp =
     "                    and the connectivity, refine's estimates and attempts beside\n"
     "                    the tree's attempt); with -o and\n"
     "                    more than one job, each file takes one; never changes the file\n"
+    "  --verify          decode the new file and compare it with the mesh before\n"
+    "                    writing it; a difference is an error and nothing is written\n"
+    "                    (costs about half the encoding time again)\n"
     "  -o, --output-dir DIR  write DIR/NAME.drm for every input (several inputs, folders)\n"
     "  -j, --jobs N      files encoded at once with -o (default: the number of cores)\n";
 

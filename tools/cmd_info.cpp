@@ -156,7 +156,7 @@ void printText(const std::string& path, const drm::Stats& s, bool ranks) {
     else row("geometry coder", s.refineBits > 0 ? std::string(drm::geometryCoderName(s.geometry)) + " (" +
                                                   std::to_string(s.refineBits) + " low bits)"
                                             : std::string(drm::geometryCoderName(s.geometry)));
-    row("vertex numbering", walk ? "the order the walk meets them"
+    row("vertex numbering", walk ? "the order the topological walk meets them"
                             : s.mortonNumbering                                     ? "Morton order"
                                                                                     : "the geometry coder's order");
     if (s.connectivityParts > 1) row("connectivity parts", std::to_string(s.connectivityParts) + " (decoded side by side)");
@@ -167,9 +167,17 @@ void printText(const std::string& path, const drm::Stats& s, bool ranks) {
     if (s.vertexOrderBytes > 0) row("vertex order bytes", std::to_string(s.vertexOrderBytes));
     if (!s.attributeSizes.empty()) {
         row("attribute bytes", bytesAndRate(s.attributeBytes, bitsPerVertex(s.attributeBytes, s)));
-        for (const drm::Stats::AttributeSize& section : s.attributeSizes)
+        uint64_t listed = 0;
+        for (const drm::Stats::AttributeSize& section : s.attributeSizes) {
             std::printf("  %-18s %s\n", section.name.c_str(),
                         bytesAndRate(section.bytes, bitsPerVertex(section.bytes, s)).c_str());
+            listed += section.bytes;
+        }
+        // Section lengths and kinds, in no section's payload: listed so the
+        // lines add up to the attribute bytes.
+        if (s.attributeBytes > listed)
+            std::printf("  %-18s %s\n", "framing",
+                        bytesAndRate(s.attributeBytes - listed, bitsPerVertex(s.attributeBytes - listed, s)).c_str());
     }
     if (ranks && s.weldedVertices > 0) row("welded vertices", std::to_string(s.weldedVertices));
     row("total bytes", bytesAndRate(s.totalBytes, s.totalBitsPerVertex()));

@@ -77,4 +77,12 @@ uint32_t parseAttributes(const std::string& list) {
     return bits;
 }
 
+uint32_t sectionAttributes(const std::string& sectionName) {
+    if (sectionName == "material names") return kAttrFaceMaterial;
+    if (sectionName == "texture names") return kAttrFaceTexture;
+    for (const AttributeName& n : kNames)
+        if (sectionName == n.name) return n.bit;
+    return 0;
+}
+
 }  // namespace drm

@@ -392,8 +392,8 @@ AttributeEncoding encodeAttributeSections(const Mesh& in, const EncodeOptions& o
         result.sections.push_back(stringsSection(kind, strings));
         result.sizes.push_back({name, result.sections.back().size()});
     };
-    if ((keep & kAttrFaceMaterial) && !in.materials.empty()) addStrings(kMaterialNames, in.materials, "materials");
-    if ((keep & kAttrFaceTexture) && !in.textures.empty()) addStrings(kTextureNames, in.textures, "textures");
+    if ((keep & kAttrFaceMaterial) && !in.materials.empty()) addStrings(kMaterialNames, in.materials, "material names");
+    if ((keep & kAttrFaceTexture) && !in.textures.empty()) addStrings(kTextureNames, in.textures, "texture names");
     if (keep & kAttrMetadata) {
         std::vector<std::string> pairs;
         for (const auto& kv : in.metadata) {
@@ -453,7 +453,7 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
                 throw Error(ErrorKind::Unsupported, "unsupported file: unknown attribute section kind " + std::to_string(kind));
             }
             result.stats.attributeSizes.push_back(
-                {kind == kMaterialNames ? "materials" : kind == kTextureNames ? "textures" : "metadata", p.size});
+                {kind == kMaterialNames ? "material names" : kind == kTextureNames ? "texture names" : "metadata", p.size});
             continue;
         }
         if (!haveOpposites && attributeNeedsOpposites(p.data, p.size)) {
@@ -584,8 +584,8 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
 std::string attributeSectionName(const uint8_t* data, size_t size) {
     if (size == 0) throw Error(ErrorKind::Corrupt, "corrupt file: an attribute section is empty");
     const uint8_t kind = data[0];
-    if (kind == kMaterialNames) return "materials";
-    if (kind == kTextureNames) return "textures";
+    if (kind == kMaterialNames) return "material names";
+    if (kind == kTextureNames) return "texture names";
     if (kind == kMetadata) return "metadata";
     if (kind < uint8_t(AttributeSemantic::Color) || kind > uint8_t(AttributeSemantic::Texture))
         throw Error(ErrorKind::Unsupported, "unsupported file: unknown attribute kind " + std::to_string(kind));

@@ -65,12 +65,7 @@ std::vector<std::string> lostAttributes(const MeshModel& m, int kept, const drm:
         lost.push_back("texture file names (texture coordinates not ticked)");
     // What the encoder was given but wrote no section for.
     uint32_t written = 0;
-    for (const drm::Stats::AttributeSize& section : stats.attributeSizes) {
-        try {
-            written |= drm::parseAttributes(section.name);
-        } catch (const drm::Error&) {
-        }
-    }
+    for (const drm::Stats::AttributeSize& section : stats.attributeSizes) written |= drm::sectionAttributes(section.name);
     const uint32_t missing = drm::attributesOf(mesh) & ~written;
     if (missing != 0) lost.push_back(drm::attributesName(missing) + " (this codec build has no section for them)");
     return lost;

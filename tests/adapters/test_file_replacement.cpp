@@ -162,8 +162,17 @@ TEST(FileReplacement, ReportsAFolderTheUserMayNotWrite) {
     ScratchDir dir;
     ASSERT_EQ(::mkdir(dir.file("closed").c_str(), 0755), 0);
     writeText(dir.file("closed/mesh.drm"), "old");
-    ASSERT_EQ(::chmod(dir.file("closed").c_str(), 0555), 0);
-    EXPECT_THROW(drm::vcgio::writeFileAtomically(dir.file("closed/mesh.drm"), kNewBytes), drm::Error);
+    ASSERT_EQ(::chmod(dir.file("closed").c_str(), 0555), 0);  // the file stays writable, the folder not
+    try {
+        drm::vcgio::writeFileAtomically(dir.file("closed/mesh.drm"), kNewBytes);
+        ADD_FAILURE() << "a file was written in a folder that refuses new files";
+    } catch (const drm::Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("cannot write " + dir.file("closed/mesh.drm") + ": the folder " + dir.file("closed") +
+                               " does not let you create files in it (Permission denied)"),
+                  std::string::npos)
+            << message;
+    }
     EXPECT_EQ(readText(dir.file("closed/mesh.drm")), "old");
     ASSERT_EQ(::chmod(dir.file("closed").c_str(), 0755), 0);  // so ScratchDir can remove it
 }

@@ -108,6 +108,14 @@ help_and_version)
         grep -q "^  $command " overview.txt || fail "--help does not list $command"
         run 0 help "$command"
         grep -q "^usage: drm $command" out.txt || fail "help $command: $(head -1 out.txt)"
+        # Every option the usage lines name has a line of its own below (or
+        # in encode's help, for commands that take encode's options).
+        cp out.txt "help-$command.txt"
+        explained="help-$command.txt"
+        grep -q "'drm encode'" out.txt && explained="$explained help-encode.txt"
+        for option in $(sed -n '/^usage:/,/^$/p' out.txt | grep -o -- '--[a-z-]*' | sort -u); do
+            cat $explained | grep -qE "^  (-[a-z], )?$option( |$)" || fail "help $command: no line explains $option"
+        done
         run 0 "$command" --help
     done
     ;;

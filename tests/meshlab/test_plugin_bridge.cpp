@@ -83,6 +83,17 @@ TEST(SaveLog, PartsAddUpToTheFileWithVertexOrderAndRepairs) {
         << summary;
 }
 
+TEST(SaveLog, ATopologicalFileNamesItsCoderNotAPredictor) {
+    drm::EncodeOptions options;
+    options.connectivity = drm::ConnectivityCoder::Topological;
+    const std::string topological = drm_meshlab::statsSummary(drm::encode(gridWithFin(20), options).stats);
+    EXPECT_NE(topological.find(" bits, topological connectivity: "), std::string::npos) << topological;
+    EXPECT_EQ(topological.find("predictor"), std::string::npos) << topological;
+    options.connectivity = drm::ConnectivityCoder::Ranks;
+    const std::string ranks = drm_meshlab::statsSummary(drm::encode(gridWithFin(20), options).stats);
+    EXPECT_NE(ranks.find(" predictor: "), std::string::npos) << ranks;
+}
+
 TEST(SaveLog, APlainMeshListsOnlyItsParts) {
     drm::Mesh mesh = gridWithFin(12);
     mesh.triangles.resize(mesh.triangles.size() - 3);

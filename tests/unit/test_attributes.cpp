@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <set>
 #include <vector>
 
 #include "drm/drm.h"
@@ -116,6 +117,24 @@ TEST(Attributes, EveryKindComesBackThroughTheDecodedOrder) {
     EXPECT_LE(sum, e.stats.attributeBytes);
     EXPECT_EQ(e.stats.headerBytes + e.stats.connectivityBytes + e.stats.geometryBytes + e.stats.attributeBytes,
               e.stats.totalBytes);
+}
+
+TEST(Attributes, EachSectionHasItsOwnNameThatSaysWhatItKeeps) {
+    const drm::Mesh m = decoratedSphere();
+    const drm::Encoded e = drm::encode(m, verifying());
+    const drm::Decoded d = drm::decode(e.bytes);
+    for (const drm::Stats* stats : {&e.stats, &d.stats}) {
+        std::set<std::string> names;
+        uint32_t kept = 0;
+        for (const auto& section : stats->attributeSizes) {
+            EXPECT_TRUE(names.insert(section.name).second) << "two sections named " << section.name;
+            EXPECT_NE(drm::sectionAttributes(section.name), 0u) << section.name;
+            kept |= drm::sectionAttributes(section.name);
+        }
+        EXPECT_TRUE(names.count("material names") && names.count("texture names"));
+        EXPECT_EQ(kept, drm::attributesOf(m));
+    }
+    EXPECT_EQ(drm::sectionAttributes("framing"), 0u);
 }
 
 TEST(Attributes, TheNormalBoundHoldsOverManyDirections) {

@@ -136,7 +136,18 @@ PreparedFile prepareFile(const std::string& path, const std::function<void(std::
     // the file it created is ever removed.
     std::string temporary = target + ".tmp.XXXXXX";
     const int fd = ::mkstemp(&temporary[0]);
-    if (fd < 0) throw Error(ErrorKind::Io, "cannot write " + shown + ": " + systemReason());
+    if (fd < 0) {
+        // The new file is made in the target's folder: when that is what
+        // refuses, say so (the file itself may well be writable).
+        if (errno == EACCES || errno == EPERM || errno == EROFS) {
+            const std::string reason = systemReason();
+            const size_t slash = target.rfind('/');
+            const std::string folder = slash == std::string::npos ? "." : (slash == 0 ? "/" : target.substr(0, slash));
+            throw Error(ErrorKind::Io, "cannot write " + shown + ": the folder " + folder +
+                                           " does not let you create files in it (" + reason + ")");
+        }
+        throw Error(ErrorKind::Io, "cannot write " + shown + ": " + systemReason());
+    }
     auto fail = [&](const std::string& reason) {
         ::close(fd);
         ::unlink(temporary.c_str());

@@ -158,6 +158,11 @@ enum AttributeBits : uint32_t {
 // Error on anything else.
 std::string attributesName(uint32_t bits);
 uint32_t parseAttributes(const std::string& list);
+// The attributes kept by the section Stats::attributeSizes lists under
+// `sectionName`: the attribute of that name, the face materials for
+// "material names", the face textures for "texture names"; 0 for a name it
+// does not know.
+uint32_t sectionAttributes(const std::string& sectionName);
 // The attributes a mesh carries, as AttributeBits.
 uint32_t attributesOf(const Mesh& mesh);
 
@@ -402,7 +407,8 @@ struct Stats {
     uint64_t repeatedFaces = 0;
     uint64_t looseFaces = 0;
     // Attribute sections, one entry per section in file order: its name (as
-    // attributesName gives it, e.g. "normals") and its payload size.
+    // attributesName gives it, e.g. "normals", or "material names", "texture
+    // names": sectionAttributes says what each keeps) and its payload size.
     struct AttributeSize {
         std::string name;
         uint64_t bytes = 0;
