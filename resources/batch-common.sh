@@ -85,6 +85,11 @@ batch_setup() {
   batch_failures=()
 }
 
+# What meshlabserver saves besides positions and faces (its -m): every
+# attribute a .drm file keeps, where the mesh has it (without -m it saves
+# none). Vertex normals MeshLab computed itself are left out by the plugin.
+batch_attributes=(-m vc vn vq vt fc fq wt)
+
 batch_size() { stat -L -c %s "$1"; }  # -L: the size of what a symlink points to
 
 # batch_convert IN OUT [MESHLABSERVER OPTIONS...]: one file; stops the batch

@@ -3,7 +3,8 @@
 #
 # Compresses every mesh in DIR (.ply .obj .off .stl, not recursive) to
 # OUTDIR/NAME.drm through MeshLab (meshlabserver with drm's io plugin, the
-# plugin's default options: 12 bits, auto predictor). Prints a line per file
+# plugin's default options: 12 bits, auto predictor), with every attribute
+# of the mesh a .drm file keeps. Prints a line per file
 # and a summary with bits per vertex; a file that cannot be compressed (for
 # example a NaN coordinate) is reported, the others are still compressed,
 # the failures are listed at the end and the exit code is 1
@@ -30,6 +31,6 @@ for in in "${inputs[@]}"; do
   # bunny.ply and bunny.obj would both become bunny.drm.
   [ -z "${taken[$out]:-}" ] || batch_fail "$base and ${taken[$out]} would both be written to $(basename "$out")"
   taken[$out]=$base
-  batch_convert "$in" "$out"
+  batch_convert "$in" "$out" "${batch_attributes[@]}"
 done
 batch_summary

@@ -2,7 +2,8 @@
 # Usage: resources/batch-decompress.sh [--stop-on-error] DIR OUTDIR
 #
 # Decompresses every .drm file in DIR (not recursive) to OUTDIR/NAME.ply
-# (binary PLY, positions and triangles) through MeshLab (meshlabserver with
+# (binary PLY, with the colours, normals, quality and texture coordinates
+# the file keeps) through MeshLab (meshlabserver with
 # drm's io plugin). Prints a line per file and a summary with bits per
 # vertex; a file that cannot be read (for example a truncated one) is
 # reported, the others are still converted, the failures are listed at the
@@ -24,6 +25,6 @@ shopt -u nocaseglob
 
 for in in "${inputs[@]}"; do
   base=$(basename "$in")
-  batch_convert "$in" "$batch_out/${base%.*}.ply"
+  batch_convert "$in" "$batch_out/${base%.*}.ply" "${batch_attributes[@]}"
 done
 batch_summary

@@ -273,6 +273,22 @@ batch)
         "$drm" decode "packed/$name.drm" "$work/$name-cli.ply" >/dev/null || fail "drm decode $name.drm failed"
         same "$work/unpacked/$name.ply" "$work/$name-cli.ply"
     done
+    # A coloured mesh keeps its colours both ways, as drm encode does.
+    mkdir coloured
+    "$drm" encode "$data/attributes/vcolors.ply" "$work/vcolors.drm" --attributes colors >/dev/null &&
+        "$drm" decode "$work/vcolors.drm" "$work/coloured/vcolors.ply" >/dev/null || fail "cannot make a coloured mesh"
+    bash "$src/resources/batch-compress.sh" coloured coloured-packed >batch.txt 2>&1 || fail "batch-compress: $(cat batch.txt)"
+    "$drm" encode "$work/coloured/vcolors.ply" "$work/vcolors-cli.drm" >/dev/null || fail "drm encode vcolors.ply failed"
+    cmp -s coloured-packed/vcolors.drm vcolors-cli.drm ||
+        fail "batch-compress lost what drm encode keeps: $("$drm" info coloured-packed/vcolors.drm | grep -A3 attribute)"
+    bash "$src/resources/batch-decompress.sh" coloured-packed coloured-unpacked >batch.txt 2>&1 ||
+        fail "batch-decompress: $(cat batch.txt)"
+    "$drm" decode coloured-packed/vcolors.drm "$work/vcolors-cli.ply" >/dev/null || fail "drm decode vcolors.drm failed"
+    same "$work/coloured-unpacked/vcolors.ply" "$work/vcolors-cli.ply" --vertex-colours
+    # Opening and saving print the codec's stages, each once.
+    server 0 -i "$work/coloured/vcolors.ply" -o "$work/progress.drm"
+    grep -qx "drm: coding vertices\|drm: ranking" server.txt || fail "no progress lines: $(cat server.txt)"
+    [ -z "$(grep '^drm: [a-z ]*$' server.txt | sort | uniq -d)" ] || fail "a stage printed twice: $(grep '^drm: ' server.txt)"
     # A failing file is reported, the others still converted, the failures
     # listed at the end, exit 1 (as drm encode -o does).
     cp "$data/bad/nan.ply" in/
