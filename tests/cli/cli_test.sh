@@ -160,6 +160,13 @@ info_json)
     grep -q '^boundary edges *34$' out.txt || fail "info: $(cat out.txt)"
     run 0 info n.drm
     grep -q '^faces *' out.txt || fail "info without --ranks: $(cat out.txt)"
+    # The attribute lines add up to the attribute bytes (framing listed).
+    run 0 encode "$data/attributes/duck.obj" duck.drm
+    run 0 info duck.drm
+    total=$(sed -n 's/^attribute bytes *\([0-9]*\) .*/\1/p' out.txt)
+    sum=$(sed -n '/^attribute bytes/,/^total bytes/p' out.txt | sed -n 's/^  [a-z -]*  *\([0-9]*\) (.*/\1/p' | awk '{ s += $1 } END { print s }')
+    [ -n "$total" ] && [ "$total" = "$sum" ] || fail "info: attribute lines add up to $sum, not $total: $(cat out.txt)"
+    grep -q '^  material names ' out.txt && grep -q '^  materials ' out.txt || fail "info: section names: $(cat out.txt)"
     run 0 info n.drm --json --ranks
     keys="vertices faces components boundary_edges bits predictor curvature connectivity_bytes geometry_bytes header_bytes total_bytes connectivity_bpv geometry_bpv total_bpv rank_histogram"
     if command -v python3 >/dev/null; then

@@ -38,9 +38,10 @@ in_root() {
     cd "$work" || exit 1
     local xvfb_pid="" meshlab_pid="" main=""
 
+    # On failure, the screen with every dialog open goes to failure.png.
     fail() {
         echo "FAIL: $*" >&2
-        [ -n "$xvfb_pid" ] && screenshot failure
+        [ -n "$xvfb_pid" ] && screenshot failure $(dialogs)
         exit 1
     }
     # Every process started here ends with the script, however it ends.
@@ -95,7 +96,7 @@ in_root() {
         local deadline=$((SECONDS + $1))
         while [ "$SECONDS" -lt "$deadline" ]; do
             grep -qF -- "$2" "$3" 2>/dev/null && return 0
-            kill -0 "$meshlab_pid" 2>/dev/null || fail "MeshLab ended while waiting for '$2' ($3: $(tail -3 "$3"))"
+            kill -0 "$meshlab_pid" 2>/dev/null || fail "MeshLab ended while waiting for '$2' (stderr: $3)"
             sleep 0.2
         done
         return 1
@@ -129,6 +130,21 @@ in_root() {
         sleep 0.3
         xdotool key --delay 150 "$@"
     }
+    # dialogs: the visible windows with a title other than MeshLab's own
+    # (its main window and its menus and docks are titled MeshLab...).
+    dialogs() {
+        local w
+        for w in $(xdotool search --onlyvisible --name . 2>/dev/null); do
+            case "$(xdotool getwindowname "$w" 2>/dev/null)" in
+            MeshLab*) ;;
+            *) echo "$w" ;;
+            esac
+        done
+    }
+    # titles: the titles of the visible windows, for messages.
+    titles() {
+        xdotool search --onlyvisible --name . getwindowname %@ 2>/dev/null | sort -u | grep -v '^MeshLab_' | paste -sd ';'
+    }
     # screenshot NAME [WINDOW...]: shot-NAME.xwd of the screen, and one
     # shot-NAME-N.xwd per WINDOW with its position in shot-NAME.overlays.
     # Qt draws dialogs in 32-bit windows, which `xwd -root` leaves black on
@@ -156,8 +172,15 @@ in_root() {
         meshlab "$file" >"meshlab-${file%.drm}.stdout" 2>"$log" &
         meshlab_pid=$!
         # A plugin that fails to load stops start-up with a modal warning.
-        wait_log 60 "drm: opened $file: $counts" "$log" ||
-            fail "MeshLab did not log 'drm: opened $file: $counts' within 60 s (stderr: $work/$log; windows: $(xdotool search --onlyvisible --name . getwindowname %@ 2>/dev/null | sort -u | tr '\n' ';'))"
+        local deadline=$((SECONDS + 60))
+        until grep -qF "drm: opened $file: $counts" "$log"; do
+            [ -z "$(xdotool search --onlyvisible --name '^Error while loading plugins' 2>/dev/null)" ] ||
+                fail "MeshLab could not load a plugin: its warning is in failure.png"
+            kill -0 "$meshlab_pid" 2>/dev/null || fail "MeshLab ended at start-up (stderr: $log)"
+            [ "$SECONDS" -lt "$deadline" ] ||
+                fail "MeshLab did not log 'drm: opened $file: $counts' within 60 s (stderr: $log; windows: $(titles))"
+            sleep 0.2
+        done
         echo "ok: MeshLab $release opened $file: $(grep -F "drm: opened $file:" "$log" | sed 's/^LOG: [0-9]* drm: opened [^:]*: //' | cut -c1-90)..."
         main=$(window_named 20 "^MeshLab $release") || fail "no MeshLab $release main window"
         # Without a window manager the window keeps Qt's default size.
@@ -194,7 +217,7 @@ in_root() {
     fi
     keys_to "$dialog" Return
     wait_log 30 "drm: saved fandisk-gui.drm: $fandisk_counts" "$log" ||
-        fail "no 'drm: saved fandisk-gui.drm: $fandisk_counts' in the log after OK (windows: $(xdotool search --onlyvisible --name . getwindowname %@ 2>/dev/null | sort -u | tr '\n' ';'))"
+        fail "no 'drm: saved fandisk-gui.drm: $fandisk_counts' in the log after OK (windows: $(titles))"
     wait_log 10 "Saved Mesh $work/fandisk-gui.drm" "$log" || fail "MeshLab did not log 'Saved Mesh' for fandisk-gui.drm"
     gone 10 "^Choose Saving Options" || fail "the save-attributes dialog stayed open"
     [ -z "$(xdotool search --onlyvisible --name 'Error' 2>/dev/null)" ] || fail "MeshLab shows an error window after saving"
@@ -211,7 +234,7 @@ in_root() {
     sleep 1
     xdotool key --delay 150 Down Down Return
     dialog=$(window_named 20 '^Colorize Faces by Distance Rank$') ||
-        fail "Filters > Color Creation and Processing did not open 'Colorize Faces by Distance Rank' (windows: $(xdotool search --onlyvisible --name . getwindowname %@ 2>/dev/null | sort -u | tr '\n' ';'))"
+        fail "Filters > Color Creation and Processing did not open 'Colorize Faces by Distance Rank' (windows: $(titles))"
     # Apply holds the dock's focus.
     keys_to "$dialog" Return
     wait_log 60 "Applied filter: Colorize Faces by Distance Rank" "$log" || fail "the filter did not finish within 60 s"
@@ -344,7 +367,7 @@ xwd_to_png() {
 if [ "$code" -ne 0 ]; then
     xwd_to_png failure "$out/failure.png" && echo "screen at the failure: $out/failure.png" >&2
     [ "$code" -eq 124 ] && fail "the GUI part took over $gui_limit s"
-    fail "the GUI part failed (exit $code); MeshLab's stderr: $out/meshlab-*.stderr"
+    fail "the GUI part failed (exit $code); MeshLab's stderr and the files: $out"
 fi
 
 # What MeshLab wrote through the plugin, read by the host's CLI.
