@@ -48,7 +48,8 @@ make_root() {
   suite=$(suite_of "$release")
   dir="$roots/$suite"
   log="$roots/$suite.log"
-  if [ -f "$dir/.drm-root-ready" ]; then
+  if [ -f "$dir/.drm-root-ready" ] &&
+     [ "$(cat "$dir/.drm-packages-done" 2>/dev/null)" = "meshlab ${build_packages[*]}" ]; then
     echo "meshlab-root: $release ready in $dir"
     return
   fi
@@ -68,23 +69,29 @@ make_root() {
   # The archive serves sid's Release file from an older snapshot: its
   # Valid-Until date has passed.
   apt_opts=(-o Acquire::Check-Valid-Until=false -qq)
-  if [ ! -f "$dir/.drm-packages-done" ]; then
+  # The mark holds the package list: a root made before a package was added
+  # to it gets the new one on the next run.
+  if [ "$(cat "$dir/.drm-packages-done" 2>/dev/null)" != "meshlab ${build_packages[*]}" ]; then
     chroot "$dir" apt-get "${apt_opts[@]}" update >>"$log" 2>&1 || fail_step "apt-get update" "$log"
     chroot "$dir" env DEBIAN_FRONTEND=noninteractive apt-get "${apt_opts[@]}" install -y meshlab >>"$log" 2>&1 ||
       fail_step "installing meshlab" "$log"
     chroot "$dir" env DEBIAN_FRONTEND=noninteractive apt-get "${apt_opts[@]}" install -y --no-install-recommends \
       "${build_packages[@]}" >>"$log" 2>&1 || fail_step "installing the build packages" "$log"
-    touch "$dir/.drm-packages-done"
+    echo "meshlab ${build_packages[*]}" > "$dir/.drm-packages-done"
   fi
   # The release's own headers and vcglib. Only the original tarball is served
   # (the .dsc is not), so apt-get source fails after downloading it; Debian's
   # patches touch the build system only.
-  chroot "$dir" bash -c 'mkdir -p /opt/meshlab-download && cd /opt/meshlab-download &&
-    { ls meshlab_*.orig.tar.* >/dev/null 2>&1 || apt-get -o Acquire::Check-Valid-Until=false -qq source --download-only meshlab || true; } &&
-    ls meshlab_*.orig.tar.*' >>"$log" 2>&1 || fail_step "downloading MeshLab's source tarball" "$log"
-  chroot "$dir" bash -c 'rm -rf /opt/meshlab-src && mkdir -p /opt/meshlab-src &&
-    tar -xf /opt/meshlab-download/meshlab_*.orig.tar.* -C /opt/meshlab-src --strip-components=1' >>"$log" 2>&1 ||
-    fail_step "unpacking MeshLab's sources" "$log"
+  if [ ! -f "$dir/opt/meshlab-src/src/common/plugins/interfaces/io_plugin.h" ]; then
+    chroot "$dir" bash -c 'mkdir -p /opt/meshlab-download && cd /opt/meshlab-download &&
+      { ls meshlab_*.orig.tar.* >/dev/null 2>&1 || apt-get -o Acquire::Check-Valid-Until=false -qq source --download-only meshlab || true; } &&
+      ls meshlab_*.orig.tar.*' >>"$log" 2>&1 || fail_step "downloading MeshLab's source tarball" "$log"
+    # Unpacked beside, then renamed: a stopped run leaves no half folder.
+    chroot "$dir" bash -c 'rm -rf /opt/meshlab-src /opt/meshlab-src.new && mkdir -p /opt/meshlab-src.new &&
+      tar -xf /opt/meshlab-download/meshlab_*.orig.tar.* -C /opt/meshlab-src.new --strip-components=1 &&
+      mv /opt/meshlab-src.new /opt/meshlab-src' >>"$log" 2>&1 ||
+      fail_step "unpacking MeshLab's sources" "$log"
+  fi
   [ -f "$dir/opt/meshlab-src/src/common/plugins/interfaces/io_plugin.h" ] || fail_step "finding MeshLab's plugin headers" "$log"
   rm -rf "$dir/opt/meshlab-download"
   chroot "$dir" apt-get clean

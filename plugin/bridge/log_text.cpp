@@ -77,9 +77,11 @@ std::string sizeBreakdown(const drm::Stats& stats) {
 
 std::string rankFilterHelpHtml() {
     using namespace drm::vcgio;
+    // A swatch of the colour before its name: the name written in its own
+    // colour is unreadable for the pale ones on the dialog's grey.
     auto coloured = [](int bucket) {
-        return "<span style='color:" + rankBucketHex(bucket) + "'><b>" + rankBucketColourName(bucket) +
-               "</b></span>";
+        return "<span style='background-color:" + rankBucketHex(bucket) + "; color:" + rankBucketHex(bucket) +
+               "'>&nbsp;&nbsp;&nbsp;</span>&nbsp;<b>" + rankBucketColourName(bucket) + "</b>";
     };
     return "Compresses the mesh's connectivity with distance-ranked coding (the .drm format) and colours "
            "every face by the rank code that created it: " +

@@ -27,6 +27,9 @@
 
 namespace drm_meshlab {
 
+// The vendor MeshLab 2021.05 on lists for both plugins (Help > Plugin Info).
+constexpr const char* kPluginVendor = "drm (distance-ranked mesh compression)";
+
 // Enables the optional components that the vcg::tri::io::Mask bits of an
 // opened file need (MeshModel::Enable in 2020.09, enable from 2021.05 on).
 inline void enableComponents(MeshModel& m, int ioMask) {

@@ -26,6 +26,8 @@ QString DrmFilterPlugin::pluginName() const { return "FilterDRM"; }
 
 #if DRM_MESHLAB_API >= 2021
 
+QString DrmFilterPlugin::vendor() const { return drm_meshlab::kPluginVendor; }
+
 DrmFilterPlugin::DrmFilterPlugin() {
     typeList = {FP_RANK_COLOURS};
     for (ActionIDType type : types()) actionList.push_back(new QAction(filterName(type), this));

@@ -26,6 +26,7 @@ public:
     DrmFilterPlugin();
 
     QString pluginName() const override;
+    QString vendor() const override;  // shown in Help > Plugin Info
     QString filterName(ActionIDType filter) const override;
     QString pythonFilterName(ActionIDType filter) const override;
     QString filterInfo(ActionIDType filter) const override;

@@ -21,6 +21,8 @@ QString DrmIOPlugin::pluginName() const { return "IODRM"; }
 
 #if DRM_MESHLAB_API >= 2021
 
+QString DrmIOPlugin::vendor() const { return drm_meshlab::kPluginVendor; }
+
 std::list<FileFormat> DrmIOPlugin::importFormats() const {
     return {FileFormat(drm_meshlab::kDrmDescription, drm_meshlab::kDrmExtension)};
 }

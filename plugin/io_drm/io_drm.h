@@ -21,6 +21,7 @@ class DrmIOPlugin : public QObject, public IOPlugin {
 
 public:
     QString pluginName() const override;
+    QString vendor() const override;  // shown in Help > Plugin Info
     std::list<FileFormat> importFormats() const override;
     std::list<FileFormat> exportFormats() const override;
     void exportMaskCapability(const QString& format, int& capability, int& defaultBits) const override;

@@ -128,7 +128,7 @@ TEST(RankPalette, FilterHelpAndLegendUseThePalettesColours) {
     for (const std::string& line : drm_meshlab::rankLegendText(faces)) text += line + "\n";
     for (int bucket = 0; bucket < drm::vcgio::kRankBucketCount; ++bucket) {
         const std::string hex = drm::vcgio::rankBucketHex(bucket);
-        EXPECT_NE(help.find("color:" + hex), std::string::npos) << hex << " not in the help";
+        EXPECT_NE(help.find("background-color:" + hex), std::string::npos) << hex << " no swatch in the help";
         EXPECT_NE(help.find(drm::vcgio::rankBucketColourName(bucket)), std::string::npos);
         EXPECT_NE(legend.find("background-color:" + hex), std::string::npos) << hex << " no swatch";
         EXPECT_NE(text.find(hex), std::string::npos) << hex << " not in the text legend";

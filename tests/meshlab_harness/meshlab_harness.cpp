@@ -138,6 +138,7 @@ int main(int argc, char** argv) {
 
     if (command == "info") {
         std::printf("meshlab: %s\n", meshlab::meshlabVersion().c_str());
+        std::printf("vendor: %s\n", io->vendor().toUtf8().constData());
         std::printf("io: %s:", io->pluginName().toUtf8().constData());
         for (const FileFormat& format : ioPlugin->importFormats())
             std::printf(" open %s (%s)", format.extensions.join(",").toUtf8().constData(),

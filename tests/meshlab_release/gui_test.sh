@@ -68,9 +68,13 @@ in_root() {
     export HOME=$work/home XDG_DATA_HOME=$work/home/data XDG_CONFIG_HOME=$work/home/config
     export XDG_CACHE_HOME=$work/home/cache XDG_RUNTIME_DIR=$work/home/runtime
     local plugin_folder=$XDG_DATA_HOME/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/$release
-    mkdir -p "$plugin_folder" "$XDG_CONFIG_HOME" "$XDG_CACHE_HOME" "$XDG_RUNTIME_DIR"
+    mkdir -p "$XDG_CONFIG_HOME" "$XDG_CACHE_HOME" "$XDG_RUNTIME_DIR"
     chmod 700 "$XDG_RUNTIME_DIR"
-    cp plugins/libio_drm.so plugins/libfilter_drm.so "$plugin_folder/" || fail "cannot fill $plugin_folder"
+    # Installed as a user installs them (README), into that folder.
+    bash /drm/scripts/meshlab-extra-plugins-install.sh "$release" "$work/plugins" ||
+        fail "scripts/meshlab-extra-plugins-install.sh failed"
+    [ -f "$plugin_folder/libio_drm.so" ] && [ -f "$plugin_folder/libfilter_drm.so" ] ||
+        fail "the install script did not fill $plugin_folder"
 
     for tool in meshlab Xvfb xdotool xwd; do
         command -v "$tool" >/dev/null ||
@@ -173,7 +177,7 @@ in_root() {
         meshlab_pid=$!
         # A plugin that fails to load stops start-up with a modal warning.
         local deadline=$((SECONDS + 60))
-        until grep -qF "drm: opened $file: $counts" "$log"; do
+        until grep -qF "drm: opened $file: $counts" "$log" 2>/dev/null; do
             [ -z "$(xdotool search --onlyvisible --name '^Error while loading plugins' 2>/dev/null)" ] ||
                 fail "MeshLab could not load a plugin: its warning is in failure.png"
             kill -0 "$meshlab_pid" 2>/dev/null || fail "MeshLab ended at start-up (stderr: $log)"
@@ -183,9 +187,21 @@ in_root() {
         done
         echo "ok: MeshLab $release opened $file: $(grep -F "drm: opened $file:" "$log" | sed 's/^LOG: [0-9]* drm: opened [^:]*: //' | cut -c1-90)..."
         main=$(window_named 20 "^MeshLab $release") || fail "no MeshLab $release main window"
-        # Without a window manager the window keeps Qt's default size.
-        xdotool windowmove "$main" 0 0 windowsize "$main" 1280 900
-        sleep 3
+        # Without a window manager the window keeps Qt's default size; Qt
+        # may still set that size after the window appears, so the resize is
+        # repeated until it holds over two looks a second apart.
+        local held=0 geometry
+        for _ in $(seq 20); do
+            geometry=$(xdotool getwindowgeometry --shell "$main" | tr '\n' ' ')
+            case "$geometry" in
+            *"X=0 Y=0 WIDTH=1280 HEIGHT=900 "*) held=$((held + 1)) ;;
+            *) held=0; xdotool windowmove "$main" 0 0 windowsize "$main" 1280 900 ;;
+            esac
+            [ "$held" -ge 2 ] && break
+            sleep 1
+        done
+        [ "$held" -ge 2 ] || fail "the MeshLab window does not keep the screen's size ($geometry)"
+        sleep 1
     }
 
     # --- fandisk: open, export through the dialogs, colorize -------------
@@ -237,7 +253,7 @@ in_root() {
         fail "Filters > Color Creation and Processing did not open 'Colorize Faces by Distance Rank' (windows: $(titles))"
     # Apply holds the dock's focus.
     keys_to "$dialog" Return
-    wait_log 60 "Applied filter: Colorize Faces by Distance Rank" "$log" || fail "the filter did not finish within 60 s"
+    wait_log 60 "Colorize Faces by Distance Rank in " "$log" || fail "the filter did not finish within 60 s"
     grep -q "^LOG: [0-9] Distance ranks of fandisk" "$log" || fail "no 'Distance ranks of fandisk' line in the log"
     grep -qF "<b>Faces per colour</b> (12946 faces)" "$log" || fail "no legend 'Faces per colour (12946 faces)' in the log"
     local bucket
@@ -257,6 +273,8 @@ in_root() {
 
     # --- duck: a textured .drm opens with its texture ---------------------
     start_meshlab duck.drm "$duck_counts"
+    grep -F "drm: opened duck.drm:" meshlab-duck.stderr | grep -q "corner-texcoords" ||
+        fail "the plugin opened duck.drm without its texture coordinates"
     ! grep -F "texture files not found" meshlab-duck.stderr ||
         fail "the duck's texture was not found beside duck.drm"
     echo "ok: duck.drm opened with its texture ($(grep -o 'corner-texcoords [0-9]* B' meshlab-duck.stderr | head -1), textures found)"
@@ -293,8 +311,8 @@ started=$SECONDS
 fail() { echo "FAIL [MeshLab $release GUI]: $*" >&2; exit 1; }
 
 [ "$(id -u)" -eq 0 ] || fail "needs root (chroot into the MeshLab root)"
-case "$out/" in
-"$project"/*) ;;
+case "$out" in
+"$project"/?*) ;;
 *) fail "OUT_DIR $out is not inside PROJECT_DIR $project (the root sees only the project)" ;;
 esac
 [ -x "$drm" ] || fail "no $drm: build the project first"
@@ -303,8 +321,14 @@ root=$(bash "$project/scripts/meshlab-root.sh" path "$release") || exit 1
 [ -f "$root/.drm-root-ready" ] || fail "no root for MeshLab $release: bash scripts/meshlab-root.sh make $release"
 echo "MeshLab GUI test: MeshLab $(cat "$root/.drm-root-ready") in $root"
 
+# OUT_DIR is emptied at each run: only a folder this script made (its mark
+# inside) or a new or empty one.
+if [ -d "$out" ] && [ -n "$(ls -A "$out")" ] && [ ! -f "$out/.gui-test" ]; then
+    fail "OUT_DIR $out holds files this test did not make: give a new folder"
+fi
 rm -rf "$out"
 mkdir -p "$out/plugins" || fail "cannot make $out"
+touch "$out/.gui-test"
 
 # The plugins may be rebuilt meanwhile: copy them until a copy is taken
 # while neither changes, so MeshLab never meets a half-written .so.
@@ -338,7 +362,7 @@ if [ -n "$texture" ]; then
     cp "$texture" "$out/duckCM.tga"
     echo "duck texture: $texture"
 else
-    convert -size 512x512 pattern:checkerboard +level-colors orange,yellow "$out/duckCM.tga" ||
+    convert -size 64x64 pattern:checkerboard -scale 800% +level-colors darkorange,khaki "$out/duckCM.tga" ||
         fail "no duckCM.tga found and ImageMagick cannot make one"
     echo "duck texture: no duckCM.tga found (set DRM_DUCK_TEXTURE); a checkerboard stands in"
 fi

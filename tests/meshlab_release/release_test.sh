@@ -71,7 +71,8 @@ load)
     grep -q "^io: IODRM: open DRM (Distance-ranked compressed mesh) save DRM" harness.txt || fail "$(cat harness.txt)"
     grep -q '^filter: FilterDRM: "Colorize Faces by Distance Rank" (python: compute_color_by_distance_rank_per_face, class 8)' harness.txt ||
         fail "$(cat harness.txt)"
-    grep '^\(meshlab\|io\|filter\):' harness.txt
+    grep -q "^vendor: drm (distance-ranked mesh compression)" harness.txt || fail "$(cat harness.txt)"
+    grep '^\(meshlab\|vendor\|io\|filter\):' harness.txt
     ;;
 export)
     # Every attribute the export dialog offers, ticked and not, against the
