@@ -13,11 +13,13 @@ for release in "${releases[@]}"; do
   bash "$here/scripts/meshlab-root.sh" make "$release"
   echo "build-meshlab-plugins: MeshLab $release -> build-meshlab-$release/plugins/"
   bash "$here/scripts/meshlab-root.sh" run "$release" bash -c '
-    set -e
+    set -eo pipefail
     build=/drm/build-meshlab-$1
     cmake -S /drm -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRM_PLUGINS_ONLY=ON \
       -DDRM_MESHLAB_RELEASE="$1" >/dev/null
-    cmake --build "$build" -j"$(nproc)" -- --no-print-directory 2>&1 | grep -v "^\[" || true
+    # A failed build fails this script: the plugins of an earlier build are
+    # never taken for new ones. Progress lines ("[ 42%] ...") are left out.
+    cmake --build "$build" -j"$(nproc)" -- --no-print-directory 2>&1 | { grep -v "^\[" || true; }
     test -f "$build/plugins/libio_drm.so" && test -f "$build/plugins/libfilter_drm.so" &&
       test -x "$build/bin/meshlab_harness"
   ' bash "$release"

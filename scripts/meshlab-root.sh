@@ -49,7 +49,8 @@ make_root() {
   dir="$roots/$suite"
   log="$roots/$suite.log"
   if [ -f "$dir/.drm-root-ready" ] &&
-     [ "$(cat "$dir/.drm-packages-done" 2>/dev/null)" = "meshlab ${build_packages[*]}" ]; then
+     [ "$(cat "$dir/.drm-packages-done" 2>/dev/null)" = "meshlab ${build_packages[*]}" ] &&
+     [ "$(cat "$dir/opt/meshlab-src/.drm-meshlab-version" 2>/dev/null)" = "$(cat "$dir/.drm-root-ready")" ]; then
     echo "meshlab-root: $release ready in $dir"
     return
   fi
@@ -82,15 +83,23 @@ make_root() {
   # The release's own headers and vcglib. Only the original tarball is served
   # (the .dsc is not), so apt-get source fails after downloading it; Debian's
   # patches touch the build system only.
-  if [ ! -f "$dir/opt/meshlab-src/src/common/plugins/interfaces/io_plugin.h" ]; then
+  # The sources of the MeshLab installed, marked with its version: a root
+  # whose MeshLab was upgraded gets that version's sources again.
+  local installed
+  installed=$(chroot "$dir" dpkg-query -W -f='${Version}' meshlab)
+  if [ ! -f "$dir/opt/meshlab-src/src/common/plugins/interfaces/io_plugin.h" ] ||
+     [ "$(cat "$dir/opt/meshlab-src/.drm-meshlab-version" 2>/dev/null)" != "$installed" ]; then
+    rm -rf "$dir/opt/meshlab-download"
     chroot "$dir" bash -c 'mkdir -p /opt/meshlab-download && cd /opt/meshlab-download &&
-      { ls meshlab_*.orig.tar.* >/dev/null 2>&1 || apt-get -o Acquire::Check-Valid-Until=false -qq source --download-only meshlab || true; } &&
-      ls meshlab_*.orig.tar.*' >>"$log" 2>&1 || fail_step "downloading MeshLab's source tarball" "$log"
+      { apt-get -o Acquire::Check-Valid-Until=false -qq source --download-only "meshlab=$1" || true; } &&
+      ls meshlab_*.orig.tar.*' bash "$installed" >>"$log" 2>&1 ||
+      fail_step "downloading the source tarball of meshlab $installed" "$log"
     # Unpacked beside, then renamed: a stopped run leaves no half folder.
     chroot "$dir" bash -c 'rm -rf /opt/meshlab-src /opt/meshlab-src.new && mkdir -p /opt/meshlab-src.new &&
       tar -xf /opt/meshlab-download/meshlab_*.orig.tar.* -C /opt/meshlab-src.new --strip-components=1 &&
       mv /opt/meshlab-src.new /opt/meshlab-src' >>"$log" 2>&1 ||
       fail_step "unpacking MeshLab's sources" "$log"
+    echo "$installed" > "$dir/opt/meshlab-src/.drm-meshlab-version"
   fi
   [ -f "$dir/opt/meshlab-src/src/common/plugins/interfaces/io_plugin.h" ] || fail_step "finding MeshLab's plugin headers" "$log"
   rm -rf "$dir/opt/meshlab-download"

@@ -45,10 +45,50 @@ bool sameDirection(const Vector& a, const Vector& b) {
     return dot(ua, ub) >= minimumCosine;
 }
 
+// True when two live vertices at different positions lie closer than
+// `step` on every axis: the file's grid may then merge them into one vertex.
+bool distinctPositionsCloserThan(const CMeshO& cm, double step) {
+    using Cell = std::tuple<long long, long long, long long>;
+    std::vector<std::pair<Cell, size_t>> cells;
+    for (size_t i = 0; i < cm.vert.size(); ++i) {
+        if (cm.vert[i].IsD()) continue;
+        const auto& p = cm.vert[i].cP();
+        cells.push_back({Cell{(long long)std::floor(p[0] / step), (long long)std::floor(p[1] / step),
+                              (long long)std::floor(p[2] / step)},
+                         i});
+    }
+    std::sort(cells.begin(), cells.end());
+    for (const auto& entry : cells) {
+        const auto& p = cm.vert[entry.second].cP();
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy)
+                for (long long dz = -1; dz <= 1; ++dz) {
+                    const Cell near{std::get<0>(entry.first) + dx, std::get<1>(entry.first) + dy,
+                                    std::get<2>(entry.first) + dz};
+                    auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(near, size_t(0)));
+                    for (; it != cells.end() && it->first == near; ++it) {
+                        const auto& q = cm.vert[it->second].cP();
+                        if (q == p) continue;
+                        if (std::fabs(double(q[0]) - p[0]) < step && std::fabs(double(q[1]) - p[1]) < step &&
+                            std::fabs(double(q[2]) - p[2]) < step)
+                            return true;
+                    }
+                }
+    }
+    return false;
+}
+
 }  // namespace
 
-bool normalsAreComputedFromFaces(const CMeshO& cm, bool verticesMayMerge) {
+bool normalsAreComputedFromFaces(const CMeshO& cm, double mergeStep) {
     if (cm.fn == 0) return false;
+    // Non-finite positions (which the codec refuses) would also break the
+    // orderings below.
+    for (const CVertexO& v : cm.vert)
+        if (!v.IsD() && !(std::isfinite(v.cP()[0]) && std::isfinite(v.cP()[1]) && std::isfinite(v.cP()[2])))
+            return false;
+    const bool verticesMayMerge = mergeStep > 0;
+    if (verticesMayMerge && distinctPositionsCloserThan(cm, mergeStep)) return false;
     std::vector<Vector> computed(cm.vert.size());
     for (const CFaceO& f : cm.face) {
         if (f.IsD()) continue;
@@ -96,6 +136,22 @@ bool normalsAreComputedFromFaces(const CMeshO& cm, bool verticesMayMerge) {
         first = last;
     }
     return true;
+}
+
+double gridStep(const CMeshO& cm, int bits) {
+    double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+    bool first = true;
+    for (const CVertexO& v : cm.vert) {
+        if (v.IsD()) continue;
+        for (int a = 0; a < 3; ++a) {
+            const double x = v.cP()[a];
+            low[a] = first ? x : std::min(low[a], x);
+            high[a] = first ? x : std::max(high[a], x);
+        }
+        first = false;
+    }
+    const double side = std::max({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
+    return side / (std::ldexp(1.0, bits) - 1.0);
 }
 
 }  // namespace drm_meshlab

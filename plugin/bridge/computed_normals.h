@@ -21,12 +21,19 @@ extern const double kComputedNormalTolerance;
 // True when every live vertex's normal points the way the angle-weighted
 // normal from its faces does (within kComputedNormalTolerance), zero-length
 // normals matching zero-length ones (vertices in no face, or in degenerate
-// faces only). With `verticesMayMerge` (the file may weld vertices at one
-// position, as the codec does for meshes with other per-vertex attributes:
-// drm::EncodeOptions::weld), each normal must also match the one computed
-// over every face at its position. False for a mesh without faces: a point
-// cloud's normals are always its own.
-bool normalsAreComputedFromFaces(const CMeshO& cm, bool verticesMayMerge);
+// faces only). A `mergeStep` above 0 says the file may weld vertices on one
+// grid point of that size, as the codec does for meshes with other
+// per-vertex attributes (drm::EncodeOptions::weld): each normal must then
+// also match the one computed over every face at its position, and no two
+// different positions may lie within a step of each other (they could
+// become one vertex). False for a mesh without faces (a point cloud's
+// normals are always its own) or with a non-finite position.
+bool normalsAreComputedFromFaces(const CMeshO& cm, double mergeStep);
+
+// The grid step of `bits` quantization bits over the live vertices'
+// bounding box: its longest side over 2^bits - 1 (an upper bound of the
+// codec's step, so vertices it may merge are found).
+double gridStep(const CMeshO& cm, int bits);
 
 }  // namespace drm_meshlab
 

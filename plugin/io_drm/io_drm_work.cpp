@@ -76,8 +76,8 @@ void saveDrm(const QString& fileName, MeshModel& m, int mask, const RichParamete
     // neither stored nor, when unticked, counted as lost.
     const int otherPerVertex = vcg::tri::io::Mask::IOM_VERTCOLOR | vcg::tri::io::Mask::IOM_VERTQUALITY |
                                vcg::tri::io::Mask::IOM_VERTTEXCOORD | vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
-    const bool computedNormals = m.hasDataMask(MeshModel::MM_VERTNORMAL) &&
-                                 normalsAreComputedFromFaces(m.cm, (kept & otherPerVertex) != 0);
+    const double mergeStep = (kept & otherPerVertex) != 0 ? gridStep(m.cm, options.bits) : 0.0;
+    const bool computedNormals = m.hasDataMask(MeshModel::MM_VERTNORMAL) && normalsAreComputedFromFaces(m.cm, mergeStep);
     const bool normalsLeftOut = computedNormals && (kept & vcg::tri::io::Mask::IOM_VERTNORMAL);
     if (computedNormals) kept &= ~vcg::tri::io::Mask::IOM_VERTNORMAL;
     drm::vcgio::attributesFromVcg(m.cm, kept, mesh);

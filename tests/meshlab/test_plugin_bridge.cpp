@@ -19,6 +19,7 @@
 #include <QMainWindow>
 #include <QStatusBar>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -261,10 +262,10 @@ void makeSidedCube(CMeshO& cm) {
 TEST(ComputedNormals, MeshLabsOwnNormalsAreRecognised) {
     CMeshO cm;
     makeSidedCube(cm);
-    EXPECT_TRUE(drm_meshlab::normalsAreComputedFromFaces(cm, false));
+    EXPECT_TRUE(drm_meshlab::normalsAreComputedFromFaces(cm, 0.0));
     // Welded into 8 corners, each vertex would get the mean of three sides:
     // the sides' normals are then the file's own.
-    EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, true));
+    EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, drm_meshlab::gridStep(cm, 12)));
 }
 
 TEST(ComputedNormals, ATurnedNormalIsTheMeshsOwn) {
@@ -273,25 +274,51 @@ TEST(ComputedNormals, ATurnedNormalIsTheMeshsOwn) {
         CMeshO cm;
         makeSidedCube(cm);
         cm.vert[5].N() = (cm.vert[5].N().Normalize() + vcg::Point3f(float(turn), 0, 0)).Normalize();
-        EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, false));
+        EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, 0.0));
     }
     {
         CMeshO cm;
         makeSidedCube(cm);
         cm.vert[5].N() = (cm.vert[5].N().Normalize() + vcg::Point3f(float(turn / 4), 0, 0)).Normalize();
-        EXPECT_TRUE(drm_meshlab::normalsAreComputedFromFaces(cm, false)) << "within the tolerance";
+        EXPECT_TRUE(drm_meshlab::normalsAreComputedFromFaces(cm, 0.0)) << "within the tolerance";
     }
     {
         CMeshO cm;
         makeSidedCube(cm);
         cm.vert[5].N() = vcg::Point3f(0, 0, 0);
-        EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, false));
+        EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, 0.0));
     }
+}
+
+TEST(ComputedNormals, PositionsTheGridMayMergeKeepTheNormals) {
+    CMeshO cm;
+    makeSidedCube(cm);
+    const double step = drm_meshlab::gridStep(cm, 12);
+    EXPECT_NEAR(step, 1.0 / 4095, 1e-12);
+    // Corners of two sides moved apart by less than a step: one grid point,
+    // so the file may make them one vertex (and MeshLab one normal).
+    const float nudge = float(step / 4);
+    for (CVertexO& v : cm.vert)
+        if (v.P() == vcg::Point3f(1, 1, 1)) {
+            v.P()[0] -= nudge;
+            break;
+        }
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(cm);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(cm);
+    EXPECT_TRUE(drm_meshlab::normalsAreComputedFromFaces(cm, 0.0));
+    EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, step));
+}
+
+TEST(ComputedNormals, ANonFinitePositionKeepsTheNormals) {
+    CMeshO cm;
+    makeSidedCube(cm);
+    cm.vert[3].P()[1] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, 0.0));
 }
 
 TEST(ComputedNormals, APointCloudsNormalsAreItsOwn) {
     CMeshO cm;
     makeSidedCube(cm);
     for (CFaceO& f : cm.face) vcg::tri::Allocator<CMeshO>::DeleteFace(cm, f);
-    EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, false));
+    EXPECT_FALSE(drm_meshlab::normalsAreComputedFromFaces(cm, 0.0));
 }
