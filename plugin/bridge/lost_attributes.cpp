@@ -1,5 +1,7 @@
 #include "bridge/lost_attributes.h"
 
+#include <drm_vcg/joined_list.h>
+
 #include <QDir>
 #include <QFileInfo>
 
@@ -80,19 +82,10 @@ std::vector<std::string> openNotes(const drm::Mesh& mesh, const QString& folder)
         const QString name = QString::fromStdString(texture);
         if (!QFileInfo(QDir::isAbsolutePath(name) ? name : dir.filePath(name)).exists()) missing.push_back(texture);
     }
-    if (!missing.empty()) notes.push_back("texture files not found beside the file: " + joinedList(missing));
+    if (!missing.empty()) notes.push_back("texture files not found beside the file: " + drm::vcgio::joinList(missing));
     if (!mesh.cornerNormals.empty() && mesh.normals.empty())
         notes.push_back("MeshLab holds no per-corner normals: each vertex gets the mean of its corners' normals");
     return notes;
-}
-
-std::string joinedList(const std::vector<std::string>& items) {
-    std::string text;
-    for (size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) text += (i + 1 == items.size()) ? " and " : ", ";
-        text += items[i];
-    }
-    return text;
 }
 
 }  // namespace drm_meshlab

@@ -38,9 +38,6 @@ std::vector<std::string> lostAttributes(const MeshModel& m, int kept, const drm:
 // `folder` (the .drm file's), per-corner normals averaged per vertex.
 std::vector<std::string> openNotes(const drm::Mesh& mesh, const QString& folder);
 
-// "a, b and c".
-std::string joinedList(const std::vector<std::string>& items);
-
 }  // namespace drm_meshlab
 
 #endif  // DRM_MESHLAB_LOST_ATTRIBUTES_H

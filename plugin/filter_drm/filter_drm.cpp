@@ -52,14 +52,14 @@ FilterPlugin::FilterClass DrmFilterPlugin::getClass(const QAction* /*action*/) c
 }
 
 int DrmFilterPlugin::getRequirements(const QAction* /*action*/) {
-    return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+    return drm_meshlab::kRankColouringComponents;
 }
 
 // Only faces are needed; colour and quality are created by the filter.
 int DrmFilterPlugin::getPreConditions(const QAction* /*action*/) const { return MeshModel::MM_FACENUMBER; }
 
 int DrmFilterPlugin::postCondition(const QAction* /*action*/) const {
-    return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+    return drm_meshlab::kRankColouringComponents;
 }
 
 FilterPlugin::FilterArity DrmFilterPlugin::filterArity(const QAction* /*action*/) const {
@@ -86,7 +86,7 @@ std::map<std::string, QVariant> DrmFilterPlugin::applyFilter(const QAction* /*ac
         log(GLLogStream::WARNING, message);
         throw MLException(QString::fromStdString(message));
     }
-    postConditionMask = MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+    postConditionMask = drm_meshlab::kRankColouringComponents;
     log(report.summary);
     // The log pane takes HTML: a legend with colour swatches, the only one a
     // user gets, since the 3D view has none.
@@ -117,14 +117,14 @@ MeshFilterInterface::FilterClass DrmFilterPlugin::getClass(QAction* /*action*/) 
 }
 
 int DrmFilterPlugin::getRequirements(QAction* /*action*/) {
-    return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+    return drm_meshlab::kRankColouringComponents;
 }
 
 // Only faces are needed; colour and quality are created by the filter.
 int DrmFilterPlugin::getPreConditions(QAction* /*action*/) const { return MeshModel::MM_FACENUMBER; }
 
 int DrmFilterPlugin::postCondition(QAction* /*action*/) const {
-    return MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+    return drm_meshlab::kRankColouringComponents;
 }
 
 MeshFilterInterface::FILTER_ARITY DrmFilterPlugin::filterArity(QAction* /*action*/) const {

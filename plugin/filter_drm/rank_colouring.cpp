@@ -40,7 +40,7 @@ RankColouringReport colourMeshByRank(MeshModel& m, const RichParameterList& para
 
     // MeshLab enables the requirements before running a filter; this keeps
     // the filter correct when called some other way.
-    m.updateDataMask(MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY);
+    m.updateDataMask(kRankColouringComponents);
     RankColouringReport report;
     report.facesPerBucket = colourFacesByRank(m.cm, encoded.faceRank);
     report.summary = "Distance ranks of " + m.label().toStdString() + ": connectivity " +

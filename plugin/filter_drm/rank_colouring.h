@@ -21,6 +21,10 @@ namespace drm_meshlab {
 // in each palette bucket. Throws drm::Error if the counts disagree.
 std::vector<uint64_t> colourFacesByRank(CMeshO& cm, const std::vector<uint32_t>& faceRank);
 
+// The MeshModel components the filter fills (per-face colour and quality):
+// its requirements and its post-condition.
+constexpr int kRankColouringComponents = MeshModel::MM_FACECOLOR | MeshModel::MM_FACEQUALITY;
+
 // What the filter logs after colouring a mesh.
 struct RankColouringReport {
     std::string summary;        // "Distance ranks of NAME: connectivity 1.23 bpv (...)"

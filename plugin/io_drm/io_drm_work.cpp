@@ -9,6 +9,7 @@
 
 #include <drm/drm.h>
 #include <drm_vcg/file_io.h>
+#include <drm_vcg/joined_list.h>
 #include <drm_vcg/vcg_attributes.h>
 #include <drm_vcg/vcg_mesh.h>
 
@@ -94,7 +95,7 @@ void saveDrm(const QString& fileName, MeshModel& m, int mask, const RichParamete
         report.notes.push_back("drm: note: " + name +
                                " leaves out the vertex normals: they are the ones MeshLab computes from the faces "
                                "when it opens a file without normals");
-    if (!lost.empty()) report.notKept = "drm: note: " + name + " does not keep the mesh's " + joinedList(lost);
+    if (!lost.empty()) report.notKept = "drm: note: " + name + " does not keep the mesh's " + drm::vcgio::joinList(lost);
     report.summary = "drm: saved " + name + ": " + statsSummary(encoded.stats);
 }
 

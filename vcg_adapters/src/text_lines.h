@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "drm_vcg/joined_list.h"  // joinList, used with these
+
 namespace drm {
 namespace vcgio {
 
@@ -16,9 +18,6 @@ std::string takeLine(const std::string& text, size_t& position);
 // The words of a line: runs of characters between blanks (space, tab, CR,
 // form feed, vertical tab).
 std::vector<std::string> splitWords(const std::string& line);
-
-// "a", "a and b", "a, b and c".
-std::string joinList(const std::vector<std::string>& items);
 
 // Cuts a statement's comment off, from a '#' that starts the line or follows
 // a blank ("usemtl red # shiny" is the material "red"; "tex#1.png" keeps its
