@@ -6,8 +6,9 @@
 #   meshlab-root.sh make RELEASE        make the root (idempotent; cached)
 #   meshlab-root.sh path RELEASE        print the root's folder
 #   meshlab-root.sh run RELEASE CMD...  run CMD inside the root, the project
-#                                       bind-mounted at /drm, in a private mount
-#                                       namespace (nothing to unmount after)
+#                                       bind-mounted at /drm, in private mount
+#                                       and network namespaces (nothing to
+#                                       unmount after; no network)
 #
 # A root holds Debian's MeshLab binary with its libmeshlab-common.so, the
 # compiler and Qt it was built with, and that release's source tarball
@@ -122,8 +123,11 @@ run_in_root() {
   [ -f "$dir/.drm-root-ready" ] || { echo "meshlab-root: no root for MeshLab $release; run: bash scripts/meshlab-root.sh make $release" >&2; exit 1; }
   need_root
   mkdir -p "$dir/drm"
-  # A private mount namespace: the bind mounts vanish with the command.
-  unshare --mount --propagation private -- bash -c '
+  # A private mount namespace: the bind mounts vanish with the command. A
+  # private network namespace (no network: nothing run here needs one): X
+  # servers listen on abstract sockets, which a chroot does not separate, so
+  # an Xvfb in the root cannot meet another X server of the same number.
+  unshare --mount --net --propagation private -- bash -c '
     set -e
     dir=$1; here=$2; shift 2
     mount --bind "$here" "$dir/drm"

@@ -81,8 +81,8 @@ in_root() {
             fail "no $tool in the root: add its package to build_packages in scripts/meshlab-root.sh and install it there"
     done
 
-    # Xvfb picks a free display itself (-displayfd): the host shares the
-    # root's abstract X sockets, so the root's lock files alone do not tell.
+    # Xvfb picks a free display itself (-displayfd); the root runs in a
+    # network namespace of its own, so its X sockets are its own too.
     Xvfb -displayfd 3 -screen 0 1280x900x24 -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
     xvfb_pid=$!
     for _ in $(seq 100); do [ -s display.txt ] && break; sleep 0.1; done
@@ -180,7 +180,8 @@ in_root() {
         until grep -qF "drm: opened $file: $counts" "$log" 2>/dev/null; do
             [ -z "$(xdotool search --onlyvisible --name '^Error while loading plugins' 2>/dev/null)" ] ||
                 fail "MeshLab could not load a plugin: its warning is in failure.png"
-            kill -0 "$meshlab_pid" 2>/dev/null || fail "MeshLab ended at start-up (stderr: $log)"
+            kill -0 "$meshlab_pid" 2>/dev/null ||
+                fail "MeshLab ended at start-up on display $DISPLAY (Xvfb $(kill -0 "$xvfb_pid" 2>/dev/null && echo running || echo gone)): $(grep -v '^LOG' "$log" | tail -3)"
             [ "$SECONDS" -lt "$deadline" ] ||
                 fail "MeshLab did not log 'drm: opened $file: $counts' within 60 s (stderr: $log; windows: $(titles))"
             sleep 0.2
