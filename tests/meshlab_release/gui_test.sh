@@ -83,7 +83,9 @@ in_root() {
 
     # Xvfb picks a free display itself (-displayfd); the root runs in a
     # network namespace of its own, so its X sockets are its own too.
-    Xvfb -displayfd 3 -screen 0 1280x900x24 -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
+    # -noreset: an X server resets when its last client leaves, and a client
+    # connecting meanwhile (MeshLab, right after xdotool) finds no display.
+    Xvfb -displayfd 3 -screen 0 1280x900x24 -nolisten tcp -noreset 3>display.txt >xvfb.log 2>&1 &
     xvfb_pid=$!
     for _ in $(seq 100); do [ -s display.txt ] && break; sleep 0.1; done
     if [ ! -s display.txt ]; then
@@ -92,6 +94,9 @@ in_root() {
         fail "Xvfb did not start: $(tail -3 xvfb.log)"
     fi
     export DISPLAY=:$(head -1 display.txt)
+    # Wait until a client gets an answer from the display Xvfb named.
+    for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+    xdotool getdisplaygeometry >/dev/null 2>&1 || fail "Xvfb on $DISPLAY answers no client: $(tail -3 xvfb.log)"
     # The pointer rests in a corner, away from tooltips.
     xdotool mousemove 5 895
 
