@@ -3,7 +3,7 @@
 #include <string>
 
 #include "drm/drm.h"
-#include "geometry_coders.h"
+#include "geometry/geometry_coders.h"
 
 namespace drm {
 

@@ -52,7 +52,7 @@ struct FixedPoint {
 // Squared distance from p to the grid point whose three coordinates start
 // at point, in fixed-point units: the one distance every search is decided
 // by, whether the point is read from a grid (spatial_index.h) or from the
-// copy a cell keeps (vertex_index.h).
+// copy a cell keeps (candidate_set.h).
 inline int64_t fixedDistance2(const int32_t* point, const FixedPoint& p) {
     const int64_t dx = int64_t(point[0]) * kSubUnits - p.x;
     const int64_t dy = int64_t(point[1]) * kSubUnits - p.y;

@@ -1,10 +1,10 @@
 // drm::inspect: what a file's header and section table say, without
 // decoding a section (docs/library.md). Reads what decode() reads first
 // (readFile), so it refuses the same malformed files.
-#include "attribute_sections.h"
+#include "attributes/attribute_sections.h"
 #include "drm/drm.h"
-#include "file_format.h"
-#include "geometry_coders.h"
+#include "container/file_format.h"
+#include "geometry/geometry_coders.h"
 #include "stats.h"
 
 namespace drm {

@@ -5,15 +5,15 @@
 #include <cmath>
 #include <string>
 
-#include "attribute_sections.h"
-#include "decoder.h"
-#include "encoder.h"
-#include "face_correspondence.h"
-#include "file_format.h"
+#include "attributes/attribute_sections.h"
+#include "decode/decoder.h"
+#include "encode/encoder.h"
+#include "mesh/face_correspondence.h"
+#include "container/file_format.h"
 #include "progress.h"
-#include "quantize.h"
+#include "mesh/quantize.h"
 #include "stats.h"
-#include "verify.h"
+#include "encode/verify.h"
 
 namespace drm {
 

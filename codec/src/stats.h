@@ -8,8 +8,8 @@
 #include <cstddef>
 
 #include "drm/drm.h"
-#include "file_format.h"
-#include "repair_section.h"
+#include "container/file_format.h"
+#include "mesh/repair_section.h"
 
 namespace drm {
 

@@ -48,7 +48,7 @@ mkdir -p "$src/tests/data"
 cp "$here"/tests/data/*.ply "$src/tests/data/" 2>/dev/null || true
 mkdir -p "$src/tests/golden"
 cp "$here"/tests/golden/*.drm "$src/tests/golden/"
-sources=("$src"/codec/src/*.cpp "$src/tests/support/test_meshes.cpp" "$src/tests/support/tiny_ply.cpp"
+sources=($(find "$src/codec/src" -name "*.cpp" | sort) "$src/tests/support/test_meshes.cpp" "$src/tests/support/tiny_ply.cpp"
          "$src/tests/determinism/encode_decode_dump.cpp")
 names=()
 status=0

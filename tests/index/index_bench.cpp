@@ -16,7 +16,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "spatial_index.h"
+#include "spatial/spatial_index.h"
 #include "tiny_ply.h"
 
 namespace {

@@ -5,8 +5,8 @@
 #include <random>
 #include <vector>
 
-#include "bit_model.h"
-#include "range_coder.h"
+#include "entropy/bit_model.h"
+#include "entropy/range_coder.h"
 
 namespace drm {
 namespace {

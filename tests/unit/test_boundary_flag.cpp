@@ -14,13 +14,13 @@
 
 #include "ranks_only.h"
 #include "drm/drm.h"
-#include "edge_model.h"
-#include "mesh_check.h"
-#include "rank_coder.h"
-#include "spatial_index.h"
+#include "connectivity/ranked/edge_model.h"
+#include "mesh/mesh_check.h"
+#include "entropy/rank_coder.h"
+#include "spatial/spatial_index.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"
-#include "traversal.h"
+#include "connectivity/traversal.h"
 
 namespace drm {
 namespace {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ranks_only.h"
-#include "connectivity_parts.h"
+#include "connectivity/connectivity_parts.h"
 #include "drm/drm.h"
 #include "drm_sections.h"
 #include "test_meshes.h"

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "container.h"
-#include "crc32.h"
+#include "container/byte_io.h"
+#include "container/crc32.h"
 #include "drm/drm.h"
 
 namespace {

@@ -12,12 +12,12 @@
 
 #include "ranks_only.h"
 #include "drm/drm.h"
-#include "edge_model.h"
-#include "gap_closing.h"
-#include "mesh_check.h"
-#include "spatial_index.h"
+#include "connectivity/ranked/edge_model.h"
+#include "connectivity/ranked/gap_closing.h"
+#include "mesh/mesh_check.h"
+#include "spatial/spatial_index.h"
 #include "tiny_ply.h"
-#include "traversal.h"
+#include "connectivity/traversal.h"
 
 namespace drm {
 namespace {

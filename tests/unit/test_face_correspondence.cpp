@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "drm/drm.h"
-#include "face_correspondence.h"
+#include "mesh/face_correspondence.h"
 
 namespace drm {
 namespace {

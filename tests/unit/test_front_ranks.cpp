@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "front_ranks.h"
+#include "connectivity/topological/front_ranks.h"
 
 namespace drm {
 namespace {

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "drm/drm.h"
-#include "geometry_refine.h"
-#include "spanning_tree.h"
+#include "geometry/refine_coder.h"
+#include "geometry/tree/spanning_tree.h"
 #include "tiny_ply.h"
 
 namespace drm {

@@ -1,4 +1,4 @@
-// Geometry coder 4, the sorted points (geometry_sorted.h).
+// Geometry coder 4, the sorted points (sorted_coder.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "drm/drm.h"
-#include "geometry_sorted.h"
+#include "geometry/sorted_coder.h"
 #include "tiny_ply.h"
 
 namespace drm {

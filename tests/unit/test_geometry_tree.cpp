@@ -10,8 +10,8 @@
 #include <string>
 
 #include "drm/drm.h"
-#include "geometry_refine.h"
-#include "geometry_tree.h"
+#include "geometry/refine_coder.h"
+#include "geometry/tree/tree_coder.h"
 #include "tiny_ply.h"
 
 namespace drm {

@@ -10,7 +10,7 @@
 #include <random>
 #include <utility>
 
-#include "halfedge_map.h"
+#include "connectivity/halfedge_map.h"
 
 namespace drm {
 namespace {

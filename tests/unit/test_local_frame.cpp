@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <random>
 
-#include "local_frame.h"
+#include "geometry/tree/local_frame.h"
 
 namespace drm {
 namespace {

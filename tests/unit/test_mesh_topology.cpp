@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "common.h"
-#include "mesh_check.h"
+#include "mesh/mesh_check.h"
 
 namespace drm {
 namespace {

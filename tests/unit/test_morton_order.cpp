@@ -11,8 +11,8 @@
 
 #include "ranks_only.h"
 #include "drm/drm.h"
-#include "morton.h"
-#include "morton_order.h"
+#include "spatial/morton.h"
+#include "spatial/morton_order.h"
 #include "tiny_ply.h"
 
 namespace drm {

@@ -8,11 +8,11 @@
 #include <random>
 #include <set>
 
-#include "morton.h"
-#include "predictor.h"
-#include "rank_search.h"
-#include "traversal.h"
-#include "spatial_index.h"
+#include "spatial/morton.h"
+#include "connectivity/ranked/predictor.h"
+#include "connectivity/ranked/rank_search.h"
+#include "connectivity/traversal.h"
+#include "spatial/spatial_index.h"
 
 namespace drm {
 namespace {

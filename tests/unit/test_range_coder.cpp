@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "range_coder.h"
+#include "entropy/range_coder.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "drm/drm.h"
-#include "rank_coder.h"
+#include "entropy/rank_coder.h"
 
 namespace {
 

@@ -8,9 +8,9 @@
 #include <random>
 
 #include "drm/drm.h"
-#include "rank_search.h"
-#include "traversal.h"
-#include "spatial_index.h"
+#include "connectivity/ranked/rank_search.h"
+#include "connectivity/traversal.h"
+#include "spatial/spatial_index.h"
 
 namespace drm {
 namespace {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "common.h"
-#include "spanning_tree.h"
+#include "geometry/tree/spanning_tree.h"
 
 namespace drm {
 namespace {

@@ -16,8 +16,8 @@
 #include <set>
 #include <string>
 
-#include "all_nearest.h"
-#include "spatial_index.h"
+#include "spatial/all_nearest.h"
+#include "spatial/spatial_index.h"
 #include "tiny_ply.h"
 
 namespace drm {

@@ -10,14 +10,14 @@
 
 #include "ranks_only.h"
 #include "drm/drm.h"
-#include "file_format.h"
-#include "edge_model.h"
-#include "rank_coder.h"
-#include "spatial_index.h"
-#include "start_triangle.h"
+#include "container/file_format.h"
+#include "connectivity/ranked/edge_model.h"
+#include "entropy/rank_coder.h"
+#include "spatial/spatial_index.h"
+#include "connectivity/start_triangle.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"
-#include "traversal.h"
+#include "connectivity/traversal.h"
 
 using namespace drm;
 

@@ -9,10 +9,10 @@
 #include <set>
 
 #include "drm/drm.h"
-#include "manifold_cut.h"
+#include "mesh/manifold_cut.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"
-#include "topological_coder.h"
+#include "connectivity/topological/topological_coder.h"
 
 namespace drm {
 namespace {

@@ -11,10 +11,10 @@
 #include <string>
 
 #include "drm/drm.h"
-#include "gap_closing.h"
-#include "mesh_check.h"
+#include "connectivity/ranked/gap_closing.h"
+#include "mesh/mesh_check.h"
 #include "tiny_ply.h"
-#include "traversal.h"
+#include "connectivity/traversal.h"
 
 namespace drm {
 namespace {

@@ -9,11 +9,11 @@
 #include <random>
 #include <set>
 
-#include "quantize.h"
-#include "rank_search.h"
-#include "traversal.h"
-#include "spatial_index.h"
-#include "vertex_index.h"
+#include "mesh/quantize.h"
+#include "connectivity/ranked/rank_search.h"
+#include "connectivity/traversal.h"
+#include "spatial/spatial_index.h"
+#include "spatial/candidate_set.h"
 
 namespace drm {
 namespace {

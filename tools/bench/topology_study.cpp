@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "manifold_cut.h"
-#include "topological_coder.h"
+#include "mesh/manifold_cut.h"
+#include "connectivity/topological/topological_coder.h"
 
 int main(int argc, char** argv) {
     if (argc < 2) {
