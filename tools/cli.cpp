@@ -239,16 +239,16 @@ bool hasExtension(const std::string& path, const std::string& extension) {
 }
 
 // The encoder's second thread would otherwise get an arena of its own,
-// outside the huge-page advice (igea: 6,600 page faults instead of 2,000,
-// and its vertex coder ran slower there than on one thread).
+// outside the huge-page advice (about three times the page faults on igea,
+// and its vertex coder would run slower there than on one thread).
 void shareOneMallocArena() {
 #ifdef __GLIBC__
     mallopt(M_ARENA_MAX, 1);
 #endif
 }
 
-// The tool's own bound (cli.h), measured on igea subdivided once and twice;
-// not one of the codec's limits.
+// The tool's own bound (cli.h), measured on igea subdivided once and twice
+// (docs/tuning.md); not one of the codec's limits.
 constexpr size_t kLargeMeshVertices = size_t(1) << 18;
 
 void mapLargeBlocksApart(size_t vertexCount) {

@@ -74,13 +74,11 @@ void shareOneMallocArena();
 // blocks of 1 MiB and more are mapped on their own and given back when
 // freed, instead of carved from the heap that main.cpp keeps. Up to 2^22
 // vertices the encoder codes the connectivity beside the vertex set, two
-// threads filling one heap, and their tables, interleaved, left holes the
-// heap could not reuse: igea subdivided once peaked at 198 to 221 MiB from
-// run to run; mapped apart from 4 MiB, 190 to 210; from 1 MiB, 188 to 196,
-// in the same time. Larger meshes gain too (igea subdivided twice, when it
-// still coded one stage after the other: 537 -> 466 MiB, 12.1 against
-// 12.1-12.9 s). A
-// batch keeps main.cpp's setting, which is process-wide: its small files
+// threads filling one heap, and their tables, interleaved, leave holes the
+// heap cannot reuse: the peak then varies from run to run, and mapping
+// large blocks apart lowers it in the same time; larger meshes, coded one
+// stage after the other, peak lower too (docs/tuning.md, "The drm tool").
+// A batch keeps main.cpp's setting, which is process-wide: its small files
 // gain from the heap's reuse.
 void mapLargeBlocksApart(size_t vertexCount);
 

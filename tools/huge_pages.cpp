@@ -10,7 +10,7 @@
 // asked for them. glibc can (GLIBC_TUNABLES=glibc.malloc.hugetlb=1), but
 // only from the environment at start-up; so the tool asks itself. Where
 // huge pages are always or never given, the advice changes nothing.
-// Measured in docs/speed.md ("Huge pages").
+// What it buys: docs/tuning.md ("The drm tool").
 //
 // When a block of kAdviseFrom bytes or more is allocated, the advice covers
 // the 2 MiB pages it lies in and, when it lies in the main heap, every page

@@ -24,13 +24,12 @@ namespace {
 // trial, each half-edge table rebuild). By default glibc maps blocks over
 // 128 KiB (a threshold that rises only as they are freed) from the kernel
 // one by one and gives them back when freed, so the next table is faulted
-// in page by page all over again: 10 % of `drm encode`'s time on igea went
-// to the kernel and to zeroing fresh pages. Blocks up to the largest
+// in page by page all over again, and the kernel's faulting and zeroing of
+// fresh pages takes a tenth of an encoding. Blocks up to the largest
 // threshold glibc allows come from the heap instead, and the heap keeps
 // what is freed for the next table. Peak memory grows a little, as blocks
-// freed early stay beside later ones (igea x4: encode +4 %, decode +5 %;
-// igea x16 encode +9 %); 64 corpus files on two workers: 0.92 of the CPU
-// and a lower peak. The heap grows 16 MiB at a time, so that the huge-page
+// freed early stay beside later ones (docs/tuning.md, "The drm tool").
+// The heap grows 16 MiB at a time, so that the huge-page
 // advice given with its large blocks (huge_pages.cpp) covers what smaller
 // blocks take from it next. Process-wide, so the tool's choice, not the
 // library's (as are cli.cpp's shareOneMallocArena, for one mesh's threads,

@@ -42,6 +42,7 @@ const char* predictorName(Predictor p) {
         case Predictor::Auto: return "auto";
         case Predictor::Parallelogram: return "parallelogram";
         case Predictor::Midpoint: return "midpoint";
+// Auto is an option, not a coder: the table holds what a file can store.
     }
     return "unknown";
 }

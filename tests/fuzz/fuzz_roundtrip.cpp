@@ -4,11 +4,11 @@
 // fuzz_decode.cpp checks that no file breaks the decoder; this checks that
 // the decoder reads every file the encoder writes. Encoder and decoder
 // replay the same traversal, predictions and adaptive models, so a step
-// coded one way and read another (as escaped child counts once were: a
-// multi-bit symbol written, single bits read) passes every corrupt-file
-// test and still loses meshes. The inputs lean towards the cases that find
-// such drift: coarse quantization (many vertices on one grid point),
-// holes, several components, isolated vertices, every option.
+// coded one way and read another (say a multi-bit symbol written, single
+// bits read) passes every corrupt-file test and still loses meshes. The
+// inputs lean towards the cases that find such drift: coarse quantization
+// (many vertices on one grid point), holes, several components, isolated
+// vertices, every option.
 //
 // Coordinates are then often moved to the edges of what a float holds
 // (extents past FLT_MAX, FLT_MAX itself, denormals, huge offsets with tiny

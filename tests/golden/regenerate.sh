@@ -2,8 +2,8 @@
 # Rewrites the golden .drm files and the meshes they must decode to. Run this
 # only for an intended format change, and say so in the commit: the golden
 # test exists so that no change of the bitstream passes unnoticed.
-# The files of older format versions (v1/ to v12/) are frozen, never rewritten: the
-# golden test checks that the decoder still reads them.
+# earlier-versions/ holds files of pre-release format versions, never
+# rewritten: the golden test checks that the reader refuses each.
 # Usage: tests/golden/regenerate.sh [path/to/drm]
 #        tests/golden/regenerate.sh --check path/to/drm
 # --check (ctest golden.encoder_writes_the_golden_files) rewrites nothing:
@@ -35,7 +35,7 @@ encode() {  # NAME SOURCE OPTIONS...
   fi
 }
 # The ranks' files ask for the ranks (--connectivity ranks): left to the
-# encoder, several would come out topological (format 13).
+# encoder, several would come out topological.
 encode torus torus.ply --connectivity ranks              # regular, closed: near-zero ranks
 encode nefertiti nefertiti.ply --levers none --connectivity ranks  # open, the paper's method
 encode blobby-3cc blobby-3cc.ply --keep-vertex-order --connectivity ranks  # 3 components with holes, all levers, vertex order kept

@@ -1,17 +1,9 @@
 // Golden files: .drm files written by an earlier build, and the meshes they
 // decoded to then. Any change of the bitstream or of the decoder's output
-// fails here; an intended one regenerates them (regenerate.sh). The files
-// of each older format version the library still reads stay, frozen, in a
-// folder of their own (v1/: written before the vertex coder's format 2;
-// v2/: before format 3's local frame; v3/: before format 4's nearest
-// candidates from the predictor's ball; v4/: before format 5's front
-// neighbours; v5/: before format 6's sign contexts; v6/: before format 7's
-// frame along the walk and tangent signs; v7/: before format 8's start
-// triangles in the connectivity section; v8/: before format 9's Morton
-// numbering; v9/: before format 10's boundary flags; v10/: before format
-// 11's connectivity in two parts; v11/: before format 12's first ball on
-// the seam's side; v12/: before format 13's topological coder), so the
-// decoder keeps reading what users already have.
+// fails here; an intended one regenerates them (regenerate.sh).
+// earlier-versions/ holds a file of each pre-release format version
+// (torus-vN.drm, as that version's encoder wrote it): the reader refuses
+// each, naming its version.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -43,15 +35,16 @@ TEST(Golden, RefineOnNefertiti) { expectDecodesToGolden("nefertiti-refine"); }
 // CAD slivers: the front order ranks a good part of the edges.
 TEST(Golden, FrontNeighboursOnTrayBottom) { expectDecodesToGolden("tray-bottom"); }
 // A scan: most edges from the parent are coded in the local frame, turned
-// along the walk, with their tangent signs in format 7's contexts.
+// along the walk, with their tangent signs in their own contexts.
 TEST(Golden, TangentSignsOnBunnyLres) { expectDecodesToGolden("bunny-lres"); }
-// Refine's coarse tree, coded with format 7's frame and signs, then two low bits.
+// Refine's coarse tree, coded with the frame along the walk and its tangent
+// signs, then two low bits.
 TEST(Golden, RefineOnMechHolesShark) { expectDecodesToGolden("shark-refine"); }
-// Holes, and the boundary flags as the only lever (format 10).
+// Holes, and the boundary flags as the only lever.
 TEST(Golden, BoundaryFlagsAloneOnBlobby) { expectDecodesToGolden("blobby-boundary"); }
-// The connectivity in two parts (format 11), forced on a small scan.
+// The connectivity in two parts, forced on a small scan.
 TEST(Golden, TwoPartsOnBunnyLres) { expectDecodesToGolden("bunny-lres-parts"); }
-// Format 13's topological coder, which the encoder picks for CAD slivers.
+// The topological coder, which the encoder picks for CAD slivers.
 TEST(Golden, TopologicalOnTrayBottom) { expectDecodesToGolden("tray-bottom-topological"); }
 // The topological coder over three components with holes, vertex order kept.
 TEST(Golden, TopologicalOnBlobbyWithVertexOrderKept) { expectDecodesToGolden("blobby-3cc-topological"); }

@@ -7,10 +7,9 @@
 // The small meshes run under every option set; tests/data's meshes under a
 // few; the shared corpus (../shared/meshes beside the project, 64 meshes,
 // with the default options, one ctest test per mesh. Without the corpus
-// those are skipped. crank and cycloidal, once left to a variable as slow
-// with FLANN (84 and 52 s), take 10 s together since the twenty-third
-// session, and check the grid's hierarchy of cells (the size step's wide
-// balls: FLANN's index never takes that path) where it is used most.
+// those are skipped. crank and cycloidal take about 10 s together and check
+// the grid's hierarchy of cells (the size step's wide balls: FLANN's index
+// never takes that path) where it is used most.
 #include <drm/drm.h>
 
 #include <gtest/gtest.h>

@@ -170,11 +170,11 @@ TEST(ChecksummedCorruption, MissingOrExtraVertexOrderSectionIsRefused) {
 }
 
 TEST(ChecksummedCorruption, UnknownHeaderFlagsAreRefused) {
-    // Bits 0-6, from format 5 on 8, from format 9 on 9 and from format 10
-    // on 10 are defined (docs/format.md; bit 7, attributes, needs the
-    // sections it announces; GoldenFormat8 refuses bit 9 in a format 8 file,
-    // GoldenFormat9 bit 10 in a format 9 file); a new flag must come with a
-    // reader that knows it, so older readers refuse it.
+    // Bits 0-6 and 8-10 may be set on their own (docs/format.md, "Header
+    // payload"); bit 7, attributes, needs the sections it announces, bit 11
+    // a connectivity section in two parts (no sample has one), and bits 12
+    // to 15 must be 0. A new flag must come with a reader that knows it, so
+    // readers without it refuse it.
     Verdicts v("unknown header flags");
     for (int bit = 7; bit < 16; ++bit) {
         if (bit == 8 || bit == 9 || bit == 10) continue;
@@ -231,8 +231,8 @@ TEST(ChecksummedCorruption, FaceCountsThatDoNotMatchAreRefused) {
 TEST(ChecksummedCorruption, ComponentCountsThatDoNotMatchAreRefused) {
     // One component more reads a start triangle past the end of the
     // connectivity section, one fewer leaves faces undecoded. (The start
-    // triangles themselves are in the connectivity section from format 8:
-    // tests/unit/test_start_triangle.cpp damages them.)
+    // triangles themselves are in the connectivity section:
+    // tests/unit/connectivity/test_start_triangle.cpp damages them.)
     Verdicts v("component counts that do not match the connectivity section");
     for (int64_t delta : {-1, 1, 2, 1000000})
         forEachHeader(
@@ -364,7 +364,7 @@ TEST(ChecksummedCorruption, OtherValidHeaderValuesAreRefusedOrSound) {
         {"geometry coder 3 (refine) over another payload", [](HeaderFields& h) { h.geometryCoder = 3; }},
         {"geometry coder 4 (sorted) over another payload", [](HeaderFields& h) { h.geometryCoder = 4; }},
         {"geometry coder 2 over a refine payload", [](HeaderFields& h) { if (h.geometryCoder == 3) h.geometryCoder = 2; }},
-        // Format 13: the topological coder over the ranks' sections, and
+        // The topological coder over the ranks' sections, and
         // the ranks over the topological coder's.
         {"connectivity coders swapped", [](HeaderFields& h) { h.connectivityCoder = uint8_t(3 - h.connectivityCoder); }},
         {"smallest step", [](HeaderFields& h) { h.step = std::numeric_limits<double>::denorm_min(); }},

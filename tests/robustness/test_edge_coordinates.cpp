@@ -49,8 +49,8 @@ std::vector<EdgeMesh> edgeMeshes() {
     meshes.push_back({"offset-near-float-max",
                       tetrahedronAt({{{3e38f, 3e38f, 3e38f}, {3.1e38f, 3e38f, 3e38f}, {3e38f, 3.1e38f, 3e38f}, {3e38f, 3e38f, 3.1e38f}}}),
                       nullptr});
-    // Found by the round-trip fuzzer: on an axis shorter than the longest,
-    // the nearest grid point of a vertex near FLT_MAX can lie past it.
+    // On an axis shorter than the longest, the nearest grid point of a
+    // vertex near FLT_MAX can lie past it (a case of the round-trip fuzzer).
     meshes.push_back({"shorter-axis-ends-at-float-max",
                       tetrahedronAt({{{-big, -0.4f * big, 0}, {big, big, 0}, {0, 0.93f * big, 1}, {0, 0.61f * big, -1}}}), nullptr});
     meshes.push_back({"one-repeated-point", tetrahedronAt({{{5, 5, 5}, {5, 5, 5}, {5, 5, 5}, {5, 5, 5}}}), nullptr});

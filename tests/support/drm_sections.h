@@ -36,8 +36,10 @@ bool parseSections(const std::vector<uint8_t>& file, std::vector<SectionSpan>* s
 // The CRC-32 of docs/format.md (reflected, polynomial 0xEDB88320, initial
 // value and final xor 0xFFFFFFFF), continuing from that of what came before.
 uint32_t crc32(const uint8_t* data, size_t size, uint32_t previous = 0);
-// A section's checksum in a file with this preamble: from version 2 it
-// covers the two version bytes before the payload.
+// A section's checksum in a file with this preamble: it covers the two
+// version bytes before the payload, or the payload alone when the preamble
+// says version 1, as that pre-release version's files have it
+// (docs/format.md, "Earlier versions").
 uint32_t sectionChecksum(const uint8_t* preamble, const std::vector<uint8_t>& payload);
 
 void appendVarint(std::vector<uint8_t>& out, uint64_t value);

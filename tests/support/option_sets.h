@@ -32,7 +32,7 @@ inline std::vector<NamedOptions> optionSets() {
         sets.push_back({name, o});
     };
     add("default", [](drm::EncodeOptions& o) { o.connectivity = drm::ConnectivityCoder::Auto; });
-    // Format 13's topological coder: its sections, with copies from a cut,
+    // The topological coder: its sections, with copies from a cut,
     // at the grid's extremes and with the input order kept.
     add("topological", [](drm::EncodeOptions& o) { o.connectivity = drm::ConnectivityCoder::Topological; });
     add("topological-bits1-keep-order", [](drm::EncodeOptions& o) {
@@ -116,7 +116,7 @@ inline std::vector<NamedOptions> optionSets() {
         o.keepVertexOrder = true;
         o.tryWithoutLevers = true;
     });
-    // Format 11's two connectivity parts, forced on small meshes: the seam
+    // The two connectivity parts, forced on small meshes: the seam
     // rule, kept vertices, starts on shared ones; with the paper's method,
     // with refine's second pass over both parts' faces, and at 2 bits
     // (points on one grid point across the split).

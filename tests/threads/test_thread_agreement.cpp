@@ -84,11 +84,11 @@ TEST(ThreadAgreement, TestDataMeshesUnderEveryGeometryCoder) {
 // Two copies of one sphere, one on the other's points: every point is on a
 // grid point twice, and the vertex coder reaches many pairs in the other
 // order than the input's. The numbering still takes each pair in input
-// order (encoder.cpp, connectivityOrder), so the connectivity ranked beside
-// the vertex set, in the Morton order of the input, is the one kept: one
-// ranking pass. Before, the connectivity was ranked a second time. (The
-// mesh has 163,840 faces and its tree stays under 11 bits a vertex: no
-// other attempt, each of which would rank again, is made.)
+// order (encode/vertex_section.cpp, connectivityOrder), so the
+// connectivity ranked beside the vertex set, in the Morton order of the
+// input, is the one kept: one ranking pass, where ranking in the vertex
+// coder's order would take a second. (The mesh has 163,840 faces and its tree stays under 11 bits a
+// vertex: no other attempt, each of which would rank again, is made.)
 TEST(ThreadAgreement, PointsOnOneGridPointAreRankedOnce) {
     drm::Mesh mesh = drm_test::icosphere(6);
     const size_t n = mesh.vertexCount(), corners = mesh.triangles.size();
@@ -139,9 +139,8 @@ TEST(ThreadAgreement, ACancelWhileTheSecondThreadRunsIsReported) {
 }
 
 // Refine's attempts run beside the tree's (a mesh of tests/data where
-// refine wins, mech-holes-shark: 2 low bits; genus3 until the tree's
-// neighbour counts). A cancel is reported as Cancelled
-// whether it comes before any thread starts (the first ranking, of the
+// refine wins, mech-holes-shark: 2 low bits). A cancel is reported as
+// Cancelled whether it comes before any thread starts (the first ranking, of the
 // connectivity coded beside the vertex section) or while the estimates
 // and attempts beside run (the last ranking this thread reports, in the
 // tree's attempt): a thread left waiting on the tree's total would hang

@@ -20,7 +20,7 @@ import sys
 import tempfile
 
 PAPER_MODELS = ["bunny", "fandisk", "feline", "horse", "horse-lres", "nefertiti", "venus", "venus-lres"]
-# Table 4 (DR) and the best other coder listed there; the goal is the smaller.
+# Table 4 (DR) and the best other coder listed there; drm aims at the smaller of the two.
 PAPER_DR = {"bunny": 0.59, "fandisk": 0.65, "feline": 1.95, "horse": 0.70, "horse-lres": 0.44,
             "nefertiti": 1.66, "venus": 1.79, "venus-lres": 2.30}
 BEST_OTHER = {"bunny": ("Nopt", 1.07), "fandisk": ("FL", 0.74), "feline": ("FL", 1.23), "horse": ("Nopt", 1.33),

@@ -19,7 +19,7 @@ namespace drm {
 namespace peers {
 namespace {
 
-// The library's default. Level 9 saved under 0.7% on bunny, fandisk and igea
+// The library's default. Level 9 saves under 0.7% on bunny, fandisk and igea
 // but spends about half a second per file setting up its 64 MB dictionary,
 // which would swamp every time in the tables.
 constexpr int kLzmaLevel = 1;

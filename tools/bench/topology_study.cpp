@@ -1,6 +1,7 @@
-// drm-topology-study: prices issue 15's topological coder (codec/src/
-// topological_coder.h) against the distance-ranked file, mesh by mesh. A
-// study tool: the coder is not yet part of the file format.
+// drm-topology-study: prices the topological connectivity coder (codec/src/
+// connectivity/topological/topological_coder.h) against the distance-ranked
+// file, mesh by mesh, and shows where its bits go. A study tool: `drm
+// encode --connectivity auto` makes the same comparison to choose a coder.
 //
 //   build/bin/drm-topology-study ../shared/meshes/*.ply
 //

@@ -1,8 +1,8 @@
 // The renderer as a module of its own (drm-render.so), loaded by `drm
 // render` only: it is the one part of the tool that needs Qt, and loading
 // Qt's libraries (Qt5Gui brings GL, X11, ICU, HarfBuzz, ...) at the start of
-// every `drm` process took about 11 ms of CPU, 2 to 5 % of a whole `drm
-// decode` of a bunny-sized mesh. The module's one entry point takes the
+// every `drm` process would take about 11 ms of CPU, 2 to 5 % of a whole
+// `drm decode` of a bunny-sized mesh. The module's one entry point takes the
 // scene and gives the PNG or an error; nothing crosses the boundary as an
 // exception. Module and tool come from the same build (same compiler and
 // standard library), so they share the C++ types of picture.h.

@@ -58,17 +58,15 @@ constexpr int kDefaultQuantizationBits = 12; // the paper's setting
 // 1..kMaxTriedRefineBits and the spanning tree alone.
 constexpr int kMaxRefineBits = 8;
 constexpr int kMaxTriedRefineBits = 5;
-// GeometryCoder::Auto (the default): where the tree costs more than
+// What GeometryCoder::Auto (the default) does, stated here because `drm
+// help encode` and the docs quote it: where the tree costs more than
 // kAutoRefineAboveBitsPerVertex, refine is also tried with each of
 // kAutoRefineLowBits, and kept where the file is at least
 // kAutoRefineMinimumGainPercent smaller (refine decodes 20-30 % slower;
 // under 8,192 vertices, tried where an estimate, within its slack,
 // promises 1 % and kept wherever smaller; under 1,000, tried where it may
-// be smaller at all and kept wherever smaller).
-// (11.0: genus3's tree cost 11.27 from format 6's sign contexts, and refine
-// saved 3.9 % on it at format 7; no other corpus mesh moved from 11.5.
-// Since its tree is also grown over the 2 nearest, genus3's tree costs
-// 10.6 bits per vertex, and refine is not tried.)
+// be smaller at all and kept wherever smaller). docs/tuning.md gives the
+// measurements behind the three values.
 constexpr double kAutoRefineAboveBitsPerVertex = 11.0;
 constexpr int kAutoRefineLowBits[] = {4, 2};
 constexpr int kAutoRefineMinimumGainPercent = 3;
@@ -79,8 +77,9 @@ constexpr int kDefaultNormalBits = 10;   // every normal within 0.2 degrees
 constexpr int kMinUvBits = 1;
 constexpr int kMaxUvBits = 24;
 constexpr int kDefaultUvBits = 12;
-// The .drm format version this library writes, and the range it reads
-// (docs/format.md, "Versions").
+// The .drm format version this library writes and the only one it reads:
+// files of earlier, pre-release versions are refused (ErrorKind::Unsupported)
+// with a message naming their version.
 constexpr int kFileFormatVersion = 13;
 constexpr int kOldestReadableFormatVersion = 1;
 constexpr int kNewestReadableFormatVersion = 13;
@@ -235,7 +234,7 @@ struct Levers {
     // the rest by distance. With confidence contexts, whether this order
     // and the distance order agree on rank 1 doubles the contexts.
     bool angleOrder = true;
-    // Format 5: the edge's two front neighbours (the far ends of the open
+    // The edge's two front neighbours (the far ends of the open
     // fans at its ends, the vertices gap closing looks at) may be ranked
     // right after rank 1, the rest following in the order above. Whether
     // they are follows which order would have coded the recent apexes in
@@ -243,7 +242,7 @@ struct Levers {
     // CAD meshes gain, smooth scans would lose). With confidence contexts,
     // edges ranked in the front order have contexts of their own.
     bool frontNeighbours = true;
-    // Format 10: whether an edge is a boundary edge (rank 0) is coded as a
+    // Whether an edge is a boundary edge (rank 0) is coded as a
     // yes or no of its own, before any rank, in contexts of what the
     // decoder sees around the edge: whether the size step found a vertex
     // ahead of it (in its first ball, a wider one, or none), how many of
@@ -321,7 +320,7 @@ struct EncodeOptions {
     // below 20000 faces also from one other first vertex and in the
     // input's face order, keeping the smallest file (0.7 % smaller on the
     // corpus in geometric mean; 1.4 to 2 times the encoding time on such
-    // meshes); from format 9 each over both vertex numberings (Morton order
+    // meshes), each over both vertex numberings (Morton order
     // and the vertex coder's: Stats::mortonNumbering). Larger meshes start
     // at their smallest vertices in Morton numbering either way.
     bool searchStarts = true;
@@ -342,7 +341,7 @@ struct EncodeOptions {
     // A program encoding several meshes at once, one per core, passes 1.
     int threads = 0;
     // The connectivity in two parts that decode on two threads at once
-    // (format 11; docs/format.md, "Format 11"): 0 (the default) splits
+    // (docs/format.md, "Two connectivity parts"): 0 (the default) splits
     // meshes whose traversal codes 32,768 faces or more in Morton
     // numbering, unless the shortest seam has more edges than 0.9 % of
     // the faces (0.06 to 0.44 % larger files on the corpus, decoded in
@@ -353,18 +352,19 @@ struct EncodeOptions {
     // Ranks codes the paper's distance ranks (every face gets a rank code:
     // Encoded::faceRank); Topological the connectivity by topology and the
     // positions in the order it meets them (docs/format.md, "Coder 2:
-    // topological"); Auto codes the ranks, then the topological coder,
-    // which gives up once it would be 5 % larger, and keeps the smaller
-    // file. Auto keeps to the ranks when an option only they have is set
-    // (geometry, predictor, curvature, levers other than all, parts);
-    // Topological refuses a geometry coder other than Auto.
+    // topological (connectivity and geometry payloads)"); Auto codes the
+    // ranks, then the topological coder, which gives up once it would be
+    // 5 % larger, and keeps the smaller file. Auto keeps to the ranks when
+    // an option only they have is set (geometry, predictor, curvature,
+    // levers other than all, parts); Topological refuses a geometry coder
+    // other than Auto.
     ConnectivityCoder connectivity = ConnectivityCoder::Auto;
     Progress progress;                      // may be empty
 };
 
 // What a .drm file holds, measured. Byte counts are exact sizes of the file's
 // parts: connectivityBytes is the connectivity section, the rank stream (as
-// the paper counts it) and, from format 8, the start triangles coded in it;
+// the paper counts it) and the start triangles coded in it;
 // totalBytes the whole file.
 struct Stats {
     uint64_t vertices = 0;
@@ -379,13 +379,13 @@ struct Stats {
     int refineBits = 0;             // low bits coded by the refinement (GeometryCoder::Refine)
     // The connectivity's vertex numbering, which is also the decoded
     // vertex order (without keepVertexOrder): Morton order of the grid
-    // points (format 9), or the geometry coder's own order (formats 1 to
-    // 8; from 9 the raw coder's, and small meshes' where it codes smaller).
+    // points, or the geometry coder's own order (the raw coder's, and small
+    // meshes' where it codes smaller).
     bool mortonNumbering = false;
-    // Format 11: the connectivity in two parts that decode side by side
+    // The connectivity in two parts that decode side by side
     // (EncodeOptions::connectivityParts), else 1.
     int connectivityParts = 1;
-    // Format 13: Ranks, or Topological (then no face has a rank: faceRank
+    // Ranks, or Topological (then no face has a rank: faceRank
     // is all 0, the rank histogram empty, and `geometry` means nothing).
     ConnectivityCoder connectivity = ConnectivityCoder::Ranks;
     uint64_t headerBytes = 0;
@@ -487,7 +487,7 @@ Encoded encode(const Mesh& mesh, const EncodeOptions& options = EncodeOptions())
 Decoded decode(const uint8_t* data, size_t size, const Progress& progress = Progress());
 struct DecodeOptions {
     NeighbourIndex index = NeighbourIndex::Auto;  // never changes the decoded mesh
-    // Threads for a file whose connectivity comes in two parts (format 11):
+    // Threads for a file whose connectivity comes in two parts:
     // 1 decodes them in turn on the calling thread, 2 or more the second
     // beside the first, 0 (the default) is 2 where the machine has more
     // than one core. Never changes the decoded mesh.

@@ -8,7 +8,8 @@
 // the order of their first corner (the traversal's face order), then, for
 // per-vertex layouts, the vertices no face uses. The encoder tries every
 // predictor the attribute allows and keeps the smallest section.
-// docs/format.md, "Attribute sections", is the byte-level description.
+// docs/format.md, "Attribute sections (flag bit 7)", is the byte-level
+// description.
 #ifndef DRM_ATTRIBUTE_CODER_H
 #define DRM_ATTRIBUTE_CODER_H
 

@@ -15,7 +15,7 @@ CornerTable buildCornerTable(const std::vector<uint32_t>& t, size_t vertexCount,
     CornerTable table;
 
     // Corners of each vertex (a counting sort: no comparison sort, which
-    // cost a third of the attribute decoding time).
+    // would take a third of the attribute decoding time).
     table.cornerStart.assign(vertexCount + 1, 0);
     for (uint32_t v : t) ++table.cornerStart[size_t(v) + 1];
     for (size_t v = 0; v < vertexCount; ++v) table.cornerStart[v + 1] += table.cornerStart[v];

@@ -19,7 +19,7 @@ public:
         // out. The edge's own ends can never be its apex either; counting
         // them costs 3-12% (method notes).
         if (v == edge.vi || v == edge.vj || traversal_.isCulled(v)) return false;
-        // Format 11, the first of two parts (connectivity_parts.h): a face
+        // The first of two connectivity parts (connectivity_parts.h): a face
         // over three vertices from the seam on is the second part's.
         if (v >= seam_ && edge.vi >= seam_ && edge.vj >= seam_) return false;
         if (!topologicalFilter_) return true;

@@ -1,5 +1,6 @@
-// Format 11: the connectivity section in two parts that decode apart, so
-// that a decoder with two cores rebuilds both halves of a mesh at once.
+// The connectivity section in two parts that decode apart (docs/format.md,
+// "Two connectivity parts"), so that a decoder with two cores rebuilds
+// both halves of a mesh at once.
 //
 // The traversal's vertices (connectivity numbering: Morton order, then any
 // vertex copies) are split at an index m. Part 1 holds every face with a

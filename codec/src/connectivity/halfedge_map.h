@@ -142,8 +142,8 @@ private:
     size_t next(size_t slot) const { return slot + 1 == capacity_ ? 0 : slot + 1; }
     size_t home(uint64_t key) const {
         // Fibonacci hashing: the top bits of the product depend on every bit
-        // of the key (its bits from 20 up, as before, ignored a in small
-        // tables, so that all edges into one vertex shared a probe run).
+        // of the key (the product's bits from 20 up alone ignore a in small
+        // tables, so that all edges into one vertex would share a probe run).
         // (The product's top 32 bits scaled to the capacity, which need
         // not be a power of two.)
         return size_t((((key * 0x9E3779B97F4A7C15ull) >> 32) * capacity_) >> 32);

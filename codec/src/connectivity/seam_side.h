@@ -1,7 +1,7 @@
-// Format 11's two connectivity parts (connectivity_parts.h): which edges
-// lie on a part's seam side. The boundary flag gives them classes of their
-// own (format 11), and their size step stops at its first ball (format 12):
-// both ask this one test, so that the two cannot drift apart.
+// The two connectivity parts (connectivity_parts.h): which edges lie on a
+// part's seam side. The boundary flag gives them classes of their own, and
+// their size step stops at its first ball: both ask this one test, so that
+// the two cannot drift apart.
 #ifndef DRM_SEAM_SIDE_H
 #define DRM_SEAM_SIDE_H
 

@@ -1,4 +1,4 @@
-// Format 8's start triangles (docs/format.md, "Start triangles"): each
+// Start triangles (docs/format.md, "Start triangles"): each
 // edge-connected component's first triangle, coded in the connectivity
 // stream just before the component's first rank.
 //

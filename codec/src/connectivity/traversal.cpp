@@ -129,9 +129,8 @@ void Traversal::insertHalfEdge(uint32_t a, uint32_t b, uint32_t value) {
     // look-up is about an edge at an active vertex (an open edge's ends, the
     // fans around them, a candidate apex), and popOpenEdge skips edges at
     // culled vertices. So when the table fills up, it first drops those:
-    // it then holds about the traversal's front, not the whole mesh (on
-    // igea subdivided once, 1.07M triangles: a few thousand slots instead
-    // of 8M, 96 MB).
+    // it then holds about the traversal's front, not the whole mesh (a few
+    // thousand slots on a mesh of a million triangles, instead of millions).
     if (halfEdges_.full())
         halfEdges_.rebuildKeeping(
             [this](uint32_t x, uint32_t y, uint32_t) { return (state_[x] != kCulled) | (state_[y] != kCulled); });

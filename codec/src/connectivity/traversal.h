@@ -36,10 +36,10 @@ public:
     // (a kept vertex may be, by an edge it does not share).
     void startComponent(uint32_t a, uint32_t b, uint32_t c);
 
-    // Format 11's parts (connectivity_parts.h): vertices whose faces in a
-    // part may form several fans are never culled there (a vertex is culled
-    // once its open edges run out, which would end it after its first
-    // fan). Before the first component.
+    // Two connectivity parts (connectivity_parts.h): vertices whose faces
+    // in a part may form several fans are never culled there (a vertex is
+    // culled once its open edges run out, which would end it after its
+    // first fan). Before the first component.
     void keepVertex(uint32_t v);
 
     // Makes room for vertices up to n - 1 (a decoder that meets its vertices
@@ -82,16 +82,16 @@ public:
     // each joined to the next by an edge at v, ending where the edge has no
     // triangle on its other side yet. Each piece's two ends are kept as
     // triangles are inserted (a few table updates per triangle), so that a
-    // piece's far end is one look-up, not a walk around the fan: a vertex
-    // of valence d made every walk around it O(d), the rebuild O(d^2)
-    // (a disc of 40,000 triangles fanned around its centre: 14 s).
+    // piece's far end is one look-up, not a walk around the fan: a walk
+    // around a vertex of valence d is O(d), which makes the rebuild O(d^2)
+    // (a disc of 40,000 triangles fanned around its centre takes seconds).
     //
     // Only a traversal told to (trackFanPieces, before the first
     // component) keeps them; the topological coder, which asks at every
     // edge, does. The distance ranks walk (fanEnds), as their searches
     // around a vertex of high valence cost as much again, and the pieces
-    // (12 bytes a vertex) would raise their decoder's peak (igea subdivided
-    // once: 156 -> 167 bytes a vertex).
+    // (12 bytes a vertex) would raise their decoder's peak memory by about
+    // 7 %.
     void trackFanPieces();
     bool tracksFanPieces() const { return trackPieces_; }
     // fanEndFrom(v, x0): x[k] of v's piece whose first triangle is
@@ -140,8 +140,8 @@ private:
     static constexpr size_t kFirstHalfEdges = 4096;
     // The table holds only the front (rebuildKeeping), so it is small, and
     // it is searched several times per triangle: kept at most a quarter
-    // full, its probe runs are short (igea decode: 1.8 M fewer mispredicted
-    // branches of 27 M than half full).
+    // full, its probe runs are short and their branches well predicted
+    // (docs/tuning.md).
     static constexpr size_t kHalfEdgeSlotsPerEdge = 4;
     void releaseIfDone(uint32_t v);
 

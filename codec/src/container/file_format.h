@@ -1,6 +1,7 @@
 // The .drm container: signature, version, then three sections (header,
-// connectivity, geometry) and up to two optional ones (vertex order, repairs), each with its length and CRC-32. docs/format.md is
-// the byte-level specification; keep the two in step.
+// connectivity, geometry) and optional ones (vertex order, repairs,
+// attributes), each with its length and CRC-32. docs/format.md is the
+// byte-level specification; keep the two in step.
 #ifndef DRM_FILE_FORMAT_H
 #define DRM_FILE_FORMAT_H
 
@@ -63,11 +64,11 @@ struct FileHeader {
     Predictor predictor = Predictor::Midpoint;
     bool curvature = false;
     bool keepsVertexOrder = false;
-    // Format 9 on: the connectivity's vertices in Morton order of their
-    // grid points (morton_order.h), or else in the vertex section's order
-    // (kFlagSectionNumbering; formats 1 to 8 always).
+    // The connectivity's vertices in Morton order of their grid points
+    // (morton_order.h), or else in the vertex section's order
+    // (kFlagSectionNumbering).
     bool mortonNumbering = true;
-    // Format 11 on: the connectivity section holds two parts
+    // The connectivity section holds two parts
     // (kFlagTwoParts, connectivity_parts.h).
     bool twoParts = false;
     Levers levers;
@@ -79,9 +80,8 @@ struct FileHeader {
     uint64_t copyCount = 0;
     // With attributes: how many attribute sections follow the others.
     uint64_t attributeSections = 0;
-    // Edge-connected components the traversal codes. Formats 1 to 7 list
-    // each one's start triangle here (3 vertex indices); from format 8 the
-    // connectivity section holds them (decoder.cpp) and this stays empty.
+    // Edge-connected components the traversal codes (their start triangles
+    // are in the connectivity section, start_triangle.h).
     uint64_t componentCount = 0;
     std::vector<uint32_t> startTriangles;
 };

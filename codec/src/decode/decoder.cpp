@@ -5,8 +5,8 @@
 // ones left in a Decoding and adds its part:
 //   readFile (file_format.h)     header and section table, checked
 //   decodeVertices               the geometry section's first pass
-//   (format 13's topological coder: decodeTopologically instead of the
-//   three stages from here, both sections at once)
+//   (connectivity coder 2, topological: decodeTopologically instead of
+//   the three stages from here, both sections at once)
 //   readRepairsBeforeTraversal   the vertex copies of a manifold cut
 //   decodeConnectivity           the ranks, replayed into triangles
 //   refineVertices               the geometry's second pass (Refine)
@@ -101,7 +101,7 @@ void readRepairsBeforeTraversal(Decoding& d) {
     d.traversalVertices = d.vertexCount + d.copyOf().size();
 }
 
-// Format 13: the topological coder's two sections decode into the vertices
+// The topological coder's two sections decode into the vertices
 // (copies included, each where its original is) and the traversal's faces,
 // in the numbering the ranks' decoder gives (topological_coder.h).
 void decodeTopologically(Decoding& d, ProgressReporter& progress) {
@@ -129,8 +129,8 @@ void decodeTopologically(Decoding& d, ProgressReporter& progress) {
     d.boundaryEdges = decoded.boundaryEdges;
 }
 
-// One rank stream replayed into faces: a whole mesh's, or one of the two
-// parts of format 11 (connectivity_parts.h).
+// One rank stream replayed into faces: a whole mesh's, or one of two
+// connectivity parts (connectivity_parts.h).
 struct RankStream {
     const uint8_t* data = nullptr;
     size_t size = 0;
@@ -160,8 +160,8 @@ RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOpt
     // The face count is only a claim until the ranks deliver the faces; the
     // vertices are already decoded, and a manifold mesh has about two faces
     // a vertex: room for that many is made at once (growing by doubling
-    // copied the faces again and again, 2.5 % of decoding igea subdivided),
-    // never more, whatever the header claims.
+    // would copy the faces again and again), never more, whatever the
+    // header claims.
     const size_t expectedFaces = std::min<size_t>(faceCount, 2 * vertexCount + 16);
     const std::unique_ptr<SpatialIndex> candidates = makeSpatialIndex(grid, options.index, IndexRole::Traversal);
     Traversal traversal(vertexCount, expectedFaces, candidates.get());
@@ -279,7 +279,7 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
         result.stats.rankHistogram = std::move(faces.histogram);
         return;
     }
-    // Format 11: part 2 over the vertices from the split on, numbered from
+    // Two parts: part 2 over the vertices from the split on, numbered from
     // 0, beside part 1 over them all.
     const ConnectivityParts parts = readConnectivityParts(whole.data, whole.size, d.traversalVertices,
                                                           header.componentCount, d.traversalFaces);

@@ -9,7 +9,7 @@
 
 namespace drm {
 
-// Format 11: whether this attempt may split its connectivity in two parts
+// Whether this attempt may split its connectivity in two parts
 // (splitFaces has the last word).
 bool maySplitConnectivity(const NumberedMesh& numbered, const EncodeOptions& options) {
     const size_t faces = numbered.triangles.size() / 3;
@@ -20,14 +20,13 @@ bool maySplitConnectivity(const NumberedMesh& numbered, const EncodeOptions& opt
 namespace {
 
 // Unless asked for two parts whatever they cost, a mesh whose shortest seam
-// has more edges than this share of its faces stays whole. The split costs
-// a mesh 0.06 to 0.44 % of its file where the seam is shorter (21 corpus
-// meshes: about 100 bytes for the second part's tables learning anew, and
-// its edges coded as boundary edges on both sides); the CAD meshes cycloidal
-// (1.8 % of its faces, 2.3 % larger) and octopus (1.0 %, 0.54 %) stay whole.
+// has more edges than this share of its faces stays whole: a short seam
+// costs a fraction of a per cent of the file (the second part's tables
+// learning anew, the seam's edges coded as boundary edges on both sides),
+// a long one on a CAD mesh several per cent (docs/tuning.md).
 constexpr double kLongestSeamPerFace = 0.009;
 
-// Where format 11 splits the numbered vertices: of the indices that leave
+// Where two parts split the numbered vertices: of the indices that leave
 // 45 to 55 % of the faces in the first part, the one with the fewest seam
 // edges (each is coded as a boundary edge in both parts), the one nearest
 // the middle of equals. On a mesh of several pieces the seam can then run

@@ -11,11 +11,11 @@
 
 namespace drm {
 
-// Format 11: whether this attempt may split its connectivity in two parts
+// Whether this attempt may split its connectivity in two parts
 // (splitFaces has the last word).
 bool maySplitConnectivity(const NumberedMesh& numbered, const EncodeOptions& options);
 
-// Format 11's two parts of the numbered mesh's faces (connectivity_parts.h):
+// The two parts of the numbered mesh's faces (connectivity_parts.h):
 // where they split, part 2's vertices, and those of them never culled.
 struct SplitFaces {
     uint32_t split = 0;

@@ -1,8 +1,8 @@
 // What the encoder's attempts at one mesh share: the mesh prepared once
 // (grid, quantized positions, the cut into manifold pieces), one attempt's
 // numbering of it, and the session that hands both to every attempt.
-// Internal to encode/: see encoder.cpp for the order in which attempts are
-// made.
+// Internal to encode/: attempt_plan.h says which attempts are made, in
+// which order.
 #ifndef DRM_ENCODE_SESSION_H
 #define DRM_ENCODE_SESSION_H
 
@@ -24,22 +24,16 @@ namespace drm {
 
 // The early connectivity (encodeBeforeVertexSection) holds the traversal's
 // tables while the vertex coder holds its own, so the peak memory is about
-// their sum. On igea subdivided once (537,374 vertices) it takes the
-// encoding from 2.6 to 1.6-1.8 s of wall time, the peak from 140 to 188-196
-// MiB (367 to 382 bytes a vertex; issue 13's goal: under 400) when the
-// vertex section keeps to one thread (below) and the drm tool maps large
-// blocks on their own (tools/cli.cpp, mapLargeBlocksApart). On igea
-// subdivided twice (2,149,490 vertices) it takes the encoding from 11.7-12.2
-// to 7.9-8.0 s, the peak from 479 to 728 MiB (355 bytes a vertex); larger
-// meshes code the two stages in turn, for memory. (Until the numbering put
-// points on one grid point in input order, connectivityOrder, igea x16's
-// early connectivity was coded in vain and then again: 14.5 s.)
+// their sum: it takes about a third off a large mesh's encoding time for
+// a third to a half more peak memory (docs/tuning.md), when the vertex
+// section keeps to one thread (below) and the drm tool maps large blocks on
+// their own (tools/cli.cpp, mapLargeBlocksApart). Larger meshes code the
+// two stages in turn, for memory.
 constexpr size_t kEarlyConnectivityUpToVertices = size_t(1) << 22;
 // Above this many vertices, a vertex section coded beside the early
 // connectivity keeps to one thread: its own second one (the graph's
-// halves, the forest built beside the cheapest-first tree) added its tables
-// to the two stages' (igea x4: 197-207 MiB and 1.8-2.1 s, against 191-199
-// MiB and 1.6-1.8 s, blocks of 4 MiB and more mapped apart).
+// halves, the forest built beside the cheapest-first tree) would add its
+// tables to the two stages', for no gain in time (docs/tuning.md).
 constexpr size_t kSectionThreadsBesideUpToVertices = size_t(1) << 18;
 
 // What every attempt at one mesh shares, and only reads: the grid, the
@@ -63,10 +57,11 @@ struct PreparedMesh {
 };
 
 // One attempt's numbering: the geometry section, the connectivity's vertex
-// order (Morton order or the section's, format 9) and the faces renumbered
-// into it, with their topology and the predictor. Connectivity is coded
-// over the renumbered faces, because ties between equal distances are
-// broken by the indices the decoder will see.
+// order (Morton order or the section's: docs/format.md, "Vertex
+// numbering") and the faces renumbered into it, with their topology and
+// the predictor. Connectivity is coded over the renumbered faces, because
+// ties between equal distances are broken by the indices the decoder will
+// see.
 // Never copied or moved: topology points into triangles.
 struct NumberedMesh {
     NumberedMesh() = default;
@@ -94,9 +89,9 @@ struct NumberedMesh {
 // SmallestVertices: each at its smallest vertex, in increasing order, but
 // for the first component if firstVertex names a vertex in a face.
 // InputFaces: each at the first face of the input that no earlier
-// component reached, as formats 1 to 7 did (the corpus's CAD meshes often
-// list their faces in an order the traversal likes: teapot's ranks cost
-// 15 % less so); firstVertex is not used.
+// component reached (the corpus's CAD meshes often list their faces in an
+// order the traversal likes: teapot's ranks cost 15 % less so);
+// firstVertex is not used.
 struct ComponentStarts {
     enum class Order { SmallestVertices, InputFaces } order = Order::SmallestVertices;
     uint32_t firstVertex = kNoVertex;

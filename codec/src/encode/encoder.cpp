@@ -23,7 +23,9 @@ namespace drm {
 namespace {
 
 // The topological attempt (ConnectivityCoder::Auto) gives up when its
-// projected size passes the ranks' file by this factor.
+// projected size passes the ranks' file by this factor: scans, where the
+// ranks win clearly, stop early, and no corpus file changes for it
+// (docs/tuning.md).
 constexpr double kTopologicalGiveUp = 1.05;
 
 // Refuses options the encoder cannot take, naming the option and its value.

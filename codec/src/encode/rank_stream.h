@@ -15,11 +15,11 @@
 
 namespace drm {
 
-// The faces one rank stream codes: a whole mesh's, or one of format 11's
-// two parts (connectivity_parts.h). Both parts read the numbered mesh's
-// faces and topology, passing over the other part's faces (copies of them
-// cost igea x4's encoding 50 MiB at its peak); part 2 numbers its vertices
-// from the split on.
+// The faces one rank stream codes: a whole mesh's, or one of two
+// connectivity parts (connectivity_parts.h). Both parts read the numbered
+// mesh's faces and topology, passing over the other part's faces (copies
+// of them would add about a quarter to the encoder's peak memory); part 2
+// numbers its vertices from the split on.
 struct RankStreamFaces {
     enum class Part { Whole, First, Second } part = Part::Whole;
     const std::vector<int32_t>* grid = nullptr;  // x, y, z of the stream's vertices

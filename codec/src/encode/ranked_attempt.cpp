@@ -19,26 +19,18 @@ namespace drm {
 namespace {
 
 // Below this many faces the paper's method (no levers) is tried too, and
-// kept where smaller: on meshes of a few hundred to 1,536 faces (torus,
-// sphere, eight) the levers' contexts see too few codes to learn. From
-// 4,096 faces, where the confidence contexts split finer
-// (kFineBucketsFromFaces, edge_model.cpp), it never won on the corpus: its
-// connectivity took 1.03 to 7.2 times the levers' on every mesh from 3,417
-// to 19,994 faces (torus-2k 39 bytes against 38, else 1.2 times or more),
-// so the attempt (one in six of such a mesh's connectivity attempts) is
-// not made.
+// kept where smaller: on meshes of a few hundred faces the levers' contexts
+// see too few codes to learn. From 4,096 faces, where the confidence
+// contexts split finer (kFineBucketsFromFaces, edge_model.cpp), it never
+// wins on the corpus (docs/tuning.md), so the attempt (one in six of such a
+// mesh's connectivity attempts) is not made.
 constexpr size_t kTryWithoutLeversBelowFaces = 4096;
 // Below this many faces, the traversal is also started from
 // kFirstVerticesTried - 1 other vertices, at the first multiples of
 // 1 / kFirstVerticesSpread of the numbering, and in the input's order
-// (encodeWithGeometry). Measured on the corpus, whole file in geometric
-// mean against format 7: 0.9941 with the input's order alone, 0.9927 with
-// one other vertex, 0.9919 with three, 0.9916 with seven; the corpus took
-// 7 %, 9 % and 20 % more encoding time for them. Three were tried until
-// the twenty-fifth session; one, a quarter of the way, now: the corpus's
-// files 111 bytes larger in all (ten grow, couplingdown the most, by 0.38 %;
-// with the vertex half way instead, turbine would grow by 0.54 %), its
-// encoding 10 % less CPU, small meshes' 15 to 36 % (docs/speed.md).
+// (encodeWithGeometry). Each start tried buys a little less file for more
+// encoding time; one other vertex, a quarter of the way, is the balance
+// (docs/tuning.md).
 constexpr size_t kTryStartsBelowFaces = 20000;
 constexpr size_t kFirstVerticesTried = 2;
 constexpr size_t kFirstVerticesSpread = 4;
@@ -238,7 +230,7 @@ Attempt encodeNumbered(const EncodeSession& session, NumberedMesh& numbered, con
         checkIndices(numbered.triangles, numbered.vertexCount);
         if (prepared.codableAsGiven) {
             // Renumbered faces of a mesh that passed: the check would find
-            // nothing (igea's encode 5.98 G -> 5.84 G instructions without it).
+            // nothing (and take about 2 % of igea's encoding instructions).
             buildTopology(numbered.triangles, numbered.vertexCount, &numbered.topology);
         } else {
             const std::string problem = topologyProblem(numbered.triangles, numbered.vertexCount, &numbered.topology);
@@ -254,9 +246,9 @@ Attempt encodeNumbered(const EncodeSession& session, NumberedMesh& numbered, con
         numbered.predictor =
             countPredictorVotes(numbered.triangles, numbered.vertexCount, numbered.topology, numbered.decodedGrid).winner();
     }
-    // Where the traversal starts changes every rank after it: over 11
-    // start vertices block's connectivity took 374 to 418 bytes, fandisk's
-    // 380 to 427, bunny's 2071 to 2121. Small meshes try several starts.
+    // Where the traversal starts changes every rank after it (over 11 start
+    // vertices, block's connectivity ranges over a tenth of its size, and
+    // which start wins is close to chance). Small meshes try several starts.
     std::vector<ComponentStarts> startsToTry(1);
     const size_t faces = numbered.triangles.size() / 3;
     if (options.searchStarts && faces < kTryStartsBelowFaces) {

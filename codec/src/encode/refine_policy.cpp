@@ -20,61 +20,49 @@ namespace {
 
 // Up to this many vertices, refine's attempts run beside the tree's, each
 // after its estimate on that estimate's thread: the three attempts are
-// held at once (on larger meshes they come one after the other, as
-// before).
+// held at once, so larger meshes make them one after the other, for memory
+// (docs/tuning.md).
 constexpr size_t kRefineAttemptsBesideUpToVertices = size_t(1) << 18;
 // An attempt beside is made at once where its estimate would be worth it
-// against a file this many times the tree's vertex section (the
-// connectivity and the rest: 1.02 to 1.33 on the corpus's meshes that
-// try refine, cycloidal 1.57, star-cgal's 14 vertices 2.3);
-// else it waits for the tree's attempt to tell its total.
+// against a file this many times the tree's vertex section (the whole file
+// is at most about 1.3 times the section on most meshes that try refine:
+// docs/tuning.md); else it waits for the tree's attempt to tell its total.
 constexpr double kSureTreeTotal = 1.2;
 
 // GeometryCoder::Auto: the tree, and where it spends more than
 // kAutoRefineAboveBitsPerVertex also refine with kAutoRefineLowBits (drm.h);
 // refine is kept where its file is at least kAutoRefineMinimumGainPercent
 // smaller, since it decodes 20-30 % slower (a second pass over the
-// triangles, ranks on a coarser grid). Measured on the corpus at 12 bits:
-// refine never wins where the tree is cheap (scans sampled finer than the
-// grid: bunny, igea, fandisk grow by 5-60 %); where it wins, 4 low bits is
-// nearly always best (armadillo -14 %, dinosaur -12 %, horse-lres -7 %) and
-// 2 the rest (genus3 -11 %); trying 1..5 finds little more for three times
-// the work.
+// triangles, ranks on a coarser grid). Refine never wins where the tree is
+// cheap (scans sampled finer than the grid); where it wins, 4 low bits is
+// nearly always best and 2 the rest, and trying 1..5 finds little more for
+// three times the work (docs/tuning.md).
 constexpr double kRefineMinimumGain = kAutoRefineMinimumGainPercent / 100.0;
 // Meshes this small decode in well under a millisecond either way: refine
-// is tried and kept wherever it is smaller (star-cgal, 14 vertices: 125
-// bytes with refine against the tree's 128, 2.3 % smaller).
+// is tried and kept wherever it is smaller.
 constexpr size_t kRefineAnyGainBelowVertices = 1000;
 // Below this many vertices, meshes decode in a few milliseconds either
 // way: a refine attempt is made where its estimate, within its slack
 // (kRefineEstimateSlack), promises a 1 % smaller file, and kept wherever it
-// is smaller (mech-holes-shark, 5,246 vertices:
-// 8,605 bytes with refine against the tree's 8,819, 2.4 % smaller, decoded
-// in 34.4 ms of CPU against 32.2, whole process). Until the twenty-fourth
-// session both asked 3 % here too; the tree's neighbour counts then took
-// mech-holes-shark's tree within 3 % of refine, and its file would have
-// grown. An estimate promising any gain at all would make attempts that
-// lose (blobby: encoding twice as long, the same file).
+// is smaller: asking 3 % here, as larger meshes do, would forgo refine on
+// meshes such as mech-holes-shark, where it saves 2.4 %, and an estimate
+// promising any gain at all would make attempts that lose (docs/tuning.md).
 constexpr size_t kRefineSmallMeshBelowVertices = 8192;
 constexpr double kRefineSmallMeshEstimatedGain = 0.01;
 
 // Where the coarse grid leaves nearest neighbours at most this many coarse
 // steps apart (the spacing the geometry tree measures), the connectivity
 // ranked on it costs at least kCrowdedConnectivityGrowth bits per vertex
-// more than on the full grid: neighbours crowd into ties. Measured on the
-// corpus at 12 bits with 4 low bits (coarse spacing 1.4 to 2.8): 0.85
-// (horse-lres) to 1.37 (dinosaur-24k) bits per vertex more; with 2 low bits
-// the spacing is 6 or more and the growth under 0.05. A refine attempt whose
-// vertex bits cannot pay for that growth as well is not made (feline: the
-// estimate saved 1.05 bits per vertex, the connectivity grew by 1.26).
+// more than on the full grid: neighbours crowd into ties (docs/tuning.md;
+// GeometryRefine.ACrowdedCoarseGridCostsConnectivity checks it). A refine
+// attempt whose vertex bits cannot pay for that growth as well is not made.
 constexpr double kCrowdedCoarseSpacing = 3.0;
 constexpr double kCrowdedConnectivityGrowth = 0.6;
 
 // The estimate codes one coarse tree where the attempt keeps the smallest
 // of several, so it may come out a little over the attempt's vertex bits
-// (genus3 with 2 low bits at format 7: estimate 9109 bytes, attempt 8981,
-// 1.4 % over): an attempt is made where the estimate misses the gain asked
-// by no more than this share of the tree's geometry.
+// (docs/tuning.md): an attempt is made where the estimate misses the gain
+// asked by no more than this share of the tree's geometry.
 constexpr double kRefineEstimateSlack = 0.015;
 
 // Refine's vertex bits without the traversal: the low bits predicted
@@ -85,34 +73,30 @@ constexpr double kRefineEstimateSlack = 0.015;
 // only, the cheapest-first with its choices as flags: refine's own coarse
 // tree takes the smallest of several (encodeRefineCoarse), which the
 // estimate leaves to the attempt, so it may come out a little over the
-// attempt's figure (kRefineEstimateSlack: genus3 with 2 low bits, 1.4 %
-// at format 7). It spares a second tree on the coarse grid wherever refine
-// is not tried (venus, feline with 2 low bits).
+// attempt's figure (kRefineEstimateSlack). It spares a second tree on the
+// coarse grid wherever refine is not tried (venus, feline with 2 low bits).
 // Past skipAbove the exact figure does not matter (the caller skips the
 // attempt): SIZE_MAX is returned as soon as the estimate must exceed it.
 //
 // The refinement comes first, over the input's numbering (it visits the
 // vertices as the triangles reach them, then those in no triangle in index
-// order: numbered in the coarse tree's order, as until the twenty-fifth
-// session, it took the same bytes on every corpus mesh), so that the
-// coarse tree knows the room left to it. With a rival (the full grid's
-// tree, TreeRival), the coarse tree is then given up once it clearly
-// cannot fit the room budgetAbove leaves (TreeBudget): until then venus
-// grew both coarse trees to the end for estimates that missed by 6 and
-// 11 %. Where the tree is not given up the estimate is the same figure.
+// order: in the coarse tree's numbering it takes the same bytes on every
+// corpus mesh), so that the coarse tree knows the room left to it. With a
+// rival (the full grid's tree, TreeRival), the coarse tree is then given up
+// once it clearly cannot fit the room budgetAbove leaves (TreeBudget):
+// without the budget, venus grows both coarse trees to the end for
+// estimates that miss by 6 and 11 %. Where the tree is not given up the
+// estimate is the same figure.
 // budgetAbove is the same bound whatever the threads (the estimates
 // beside the tree's attempt know no looser one), so that which trees are
 // given up, and so the file, does not depend on them.
 //
 // How far the coarse tree's extrapolated section may run over its room
-// before it is given up, as a share of the rival's section. On the
-// corpus's meshes of 8,192 vertices or more, from 4/16 of the vertices on,
-// the extrapolation came within 1.6 % of the end's figure where it was
-// above it (mannequin with 4 low bits; dinosaur-24k with 2, 1.5 %); the
-// trees given up (venus, nefertiti-50k, tower-holes, pinocchio,
-// dragon-res3, falconstatue-boundary, cycloidal, chinese-dragon-10k,
-// rocker-arm, venus-lres, both low-bit counts each) ran 4.0 to 39 % over
-// at 4/16; feline's, whose estimates miss by less, are grown to the end.
+// before it is given up, as a share of the rival's section: from 4/16 of
+// the vertices on, the extrapolation comes within 1.6 % of the end's
+// figure on the corpus, and the trees given up run 4 % over or more
+// (docs/tuning.md); feline's, whose estimates miss by less, are grown to
+// the end.
 constexpr double kEstimateGiveUpMargin = 0.03;
 size_t refineGeometryEstimate(const std::vector<int32_t>& quantized, const std::vector<uint32_t>& triangles, int bits,
                               int lowBits, NeighbourIndex index, GeometryTreeTrials& trials, double skipAbove,
@@ -227,9 +211,9 @@ Attempt encodeWithChosenGeometry(const EncodeSession& session, VertexSection sec
         // An estimate promising against that looser bound goes on to its
         // attempt on the same thread (each attempt is the same whenever it
         // is made): the test below keeps it only where the attempt's bound
-        // would have made it. Before, the attempts came one after the other
-        // once the tree's was done (armadillo-43k, whole process: 1.16 s
-        // then, 0.80 s now; docs/speed.md).
+        // would have made it. Attempts made one after the other once the
+        // tree's is done would take a third longer on a mesh whose refine
+        // attempts are large (armadillo-43k: docs/tuning.md).
         estimating.reserve(estimates.size());  // a push_back that threw would wait on a thread waiting here
         for (Estimate& each : estimates) {
             Estimate* e = &each;

@@ -12,9 +12,8 @@ namespace drm {
 namespace {
 
 // Hubs: the distance ranks' searches around a vertex of d faces cost about
-// d^2 in all (its neighbours lie about it at like distances), so that a
-// disc of 4,000 triangles fanned around its centre took 1.5 s to encode,
-// 10,000 of them 5.8 s; the topological coder takes 0.02 s. Where the faces
+// d^2 in all (its neighbours lie about it at like distances), where the
+// topological coder's cost stays linear (docs/tuning.md). Where the faces
 // at each vertex, squared and summed, pass this floor and this much a face,
 // Auto codes topologically alone (the ranks only if that cannot be coded).
 // Ordinary meshes sum about 18 a face (valence 6); the corpus's most, crank

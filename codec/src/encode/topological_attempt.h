@@ -17,7 +17,7 @@ namespace drm {
 // (kHubWorkFloor). Indices in range (checkIndices).
 bool hasHubs(const Mesh& mesh);
 
-// Format 13: the mesh by the topological coder (topological_coder.h): the
+// The mesh by the topological coder (topological_coder.h): the
 // connectivity named by topology, the positions in the order the walk
 // meets them. The repairs and vertex order sections are as for ranks.
 // giveUpAbove (0: never): the size of the file to beat; past it (by the

@@ -13,19 +13,16 @@ namespace drm {
 namespace {
 
 // Below this many faces, the connectivity is also coded over the vertex
-// section's order (formats 1 to 8; kFlagSectionNumbering) besides Morton
-// order, and the smaller file kept. Regular meshes break their many ties
-// between equal distances better in the tree's order, a walk over the
-// surface: torus-2k's connectivity took 57 bytes in Morton order, 38 in
-// the tree's.
+// section's order (kFlagSectionNumbering) besides Morton order, and the
+// smaller file kept. Regular meshes break their many ties between equal
+// distances better in the tree's order, a walk over the surface
+// (torus-2k's connectivity takes a third less: docs/tuning.md).
 constexpr size_t kTrySectionNumberingBelowFaces = 20000;
 
 // From this many vertices, refine's estimates give their coarse tree up
 // where it clearly cannot pay (TreeBudget, refineGeometryEstimate): on
 // smaller meshes they cost less, and there the extrapolation from the
-// first vertices strays further (from 8,192 vertices on the corpus, at
-// most mannequin's, 11,703 vertices, with 4 low bits: 1.6 % of the full
-// tree's section above the end's figure at 4/16, 2.4 % at 3/16).
+// first vertices strays further (docs/tuning.md).
 constexpr size_t kEstimateBudgetFromVertices = 8192;
 // Larger meshes' estimates are not budgeted: the rival's figures (and a
 // copy of the tree's section) would add to the encoder's peak memory, the
@@ -33,7 +30,7 @@ constexpr size_t kEstimateBudgetFromVertices = 8192;
 // (kSectionThreadsBesideUpToVertices).
 constexpr size_t kEstimateBudgetUpToVertices = kSectionThreadsBesideUpToVertices;
 
-// Format 9's numbering of the vertices for the connectivity (morton_order.h):
+// The numbering of the vertices for the connectivity (morton_order.h):
 // sectionOrder (decoded index -> input index) sorted stably by the Morton
 // keys of the points of vertexGrid (input order). Returns connectivity
 // index -> input index.
@@ -44,9 +41,10 @@ constexpr size_t kEstimateBudgetUpToVertices = kSectionThreadsBesideUpToVertices
 // changes none of its bytes: so they are first put in input order there
 // (sectionOrder is rewritten). The numbering is then the Morton order of
 // the input, the one encodeBeforeVertexSection guesses before the section
-// exists, and its connectivity is kept. Before, a single such pair
-// reached in the other order made the guess wrong and the connectivity
-// was coded twice (igea x16: 284 more points than grid points at 12 bits).
+// exists, and its connectivity is kept: otherwise a single such pair
+// reached in the other order would make the guess wrong and the
+// connectivity be coded twice (igea x16 has 284 more points than grid
+// points at 12 bits).
 std::vector<uint32_t> connectivityOrder(const std::vector<int32_t>& vertexGrid, std::vector<uint32_t>& sectionOrder) {
     std::vector<int32_t> inSectionOrder(3 * sectionOrder.size());
     for (size_t d = 0; d < sectionOrder.size(); ++d)

@@ -60,10 +60,11 @@ Attempt encodeWithGeometry(const EncodeSession& session, const VertexSectionPlan
 
 // The first attempt's connectivity, coded before its vertex section
 // (encodeConnectivity) in the numbering that section will most likely give:
-// Morton order (format 9), points on one grid point in input order. Where
-// no two points coincide, that is certain; elsewhere connectivityOrder
-// puts such points in input order too, and encodeWithGeometry compares the
-// two numberings before it keeps the attempt.
+// Morton order (docs/format.md, "Vertex numbering"), points on one grid
+// point in input order. Where no two points coincide, that is certain;
+// elsewhere connectivityOrder puts such points in input order too, and
+// encodeWithGeometry compares the two numberings before it keeps the
+// attempt.
 // The file is written with an empty vertex section until encodeWithGeometry
 // adds the section.
 EarlyConnectivity encodeBeforeVertexSection(const EncodeSession& session, ProgressReporter& progress);

@@ -11,9 +11,8 @@ namespace {
 
 // A coded symbol's count grows by kIncrement; once the total passes kLimit
 // all counts are halved (rounding up, so none reaches zero), so a context
-// weighs roughly its last 1000-2000 symbols. Measured on synthetic rank
-// streams: an increment of 16 gains 0.2% on stationary streams but loses
-// 1% when the statistics drift; 48, or a limit of 2^15, the reverse.
+// weighs roughly its last 1000-2000 symbols: a balance between stationary
+// and drifting statistics (docs/tuning.md).
 constexpr uint32_t kIncrement = 32;
 constexpr uint32_t kLimit = kRangeCoderMaxTotal;
 
@@ -31,10 +30,10 @@ constexpr uint32_t kMaxEscapeBits = 32;
 
 // Starting counts of the rank symbols. Nearly all ranks are 1 and 2 with
 // 0 and 3 next, so starting them ahead shortens the learning phase of each
-// context (worth about 4% on a 1000-rank stream against a flat start, and
-// the weight of one or two observations, so real statistics soon override
-// it). Every symbol needs a count of at least 1. With boundary flags
-// (format 10) rank 0 never comes as a rank: it keeps the least count.
+// context; they weigh one or two observations, so real statistics soon
+// override them (docs/tuning.md). Every symbol needs a count of at least 1.
+// With boundary flags rank 0 never comes as a rank: it keeps
+// the least count.
 std::vector<uint16_t> rankPrior(bool boundaryFlags) {
     std::vector<uint16_t> counts(kRankDirectSymbols + 1, 1);
     counts[0] = boundaryFlags ? 1 : 4;

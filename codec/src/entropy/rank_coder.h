@@ -7,13 +7,13 @@
 // symbol followed by an Exp-Golomb code of rank - kRankDirectSymbols, so any
 // uint32 can be coded.
 //
-// From format 8 the stream also holds each component's start triangle, as
-// three gaps (putStartGap) before the component's first rank.
+// The stream also holds each component's start triangle, as three gaps
+// (putStartGap) before the component's first rank.
 //
-// With the boundary flag lever (format 10) every edge first gets a yes or
-// no, "boundary edge", in a context of its class (EdgeModel's
-// boundaryClass) and of whether the edge before was one; only an edge that
-// is not gets a rank, and rank 0 then never comes.
+// With the boundary flag lever every edge first gets a yes or no,
+// "boundary edge", in a context of its class (EdgeModel's boundaryClass)
+// and of whether the edge before was one; only an edge that is not gets a
+// rank, and rank 0 then never comes.
 #ifndef DRM_RANK_CODER_H
 #define DRM_RANK_CODER_H
 
@@ -27,11 +27,11 @@ namespace drm {
 
 // Ranks 0..kRankDirectSymbols-1 are coded as symbols of their own.
 constexpr uint32_t kRankDirectSymbols = 24;
-// The boundary flag's edge classes (format 10; the last three only in
-// format 11's two connectivity parts, for edges on the seam's side).
+// The boundary flag's edge classes (the last three only in the two
+// connectivity parts, for edges on the seam's side).
 constexpr int kBoundaryClasses = 12;
 
-// The fields of a start triangle (format 8, docs/format.md): the first
+// The fields of a start triangle (docs/format.md, "Start triangles"): the first
 // vertex's distance from the decoder's cursor, then the other two vertices'
 // distances past it. Each field has its own model of bit lengths.
 enum class StartField { Skipped = 0, Second = 1, Third = 2 };
@@ -74,10 +74,10 @@ private:
 // The rank tables: one per (previous rank class, caller context). A table
 // is seeded when first used from a context-free table of its previous-rank
 // class, which sees every symbol; so many contexts cost little on small
-// meshes (torus, 576 faces: 9 bytes unseeded, 2 seeded).
+// meshes, whose contexts see few symbols each.
 class RankContexts {
 public:
-    // boundaryFlags: rank 0 is coded apart (format 10), so the tables
+    // boundaryFlags: rank 0 is coded apart (boundary flags), so the tables
     // start with the least count for it.
     RankContexts(int extraContexts, bool boundaryFlags);
     AdaptiveFrequencies& table(int previousClass, int extraContext);
@@ -91,7 +91,7 @@ private:
     std::vector<uint8_t> seeded_;
 };
 
-// Format 10's boundary flags: a yes/no table per edge class and whether
+// The boundary flags: a yes/no table per edge class and whether
 // the edge before was a boundary edge.
 class BoundaryFlags {
 public:
@@ -116,7 +116,7 @@ private:
 class RankEncoder {
 public:
     // extraContexts >= 1 is the number of values of the caller's context.
-    // boundaryFlags: a boundary flag before each rank (format 10).
+    // boundaryFlags: a boundary flag before each rank.
     explicit RankEncoder(int extraContexts = 1, bool boundaryFlags = false);
     // rank: any value (0 = boundary edge); extraContext in [0, extraContexts);
     // boundaryClass in [0, kBoundaryClasses) with boundary flags, else

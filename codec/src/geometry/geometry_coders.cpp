@@ -36,29 +36,25 @@ VertexSet decodeSorted(const uint8_t* data, size_t size, uint64_t vertexCount, i
 // flags naming the predictors, the local frame allowed. On meshes of up to
 // kEveryTreeCodingUpTo vertices, which encode in a fraction of a second,
 // the trees are also grown and coded with one symbol per choice, and each
-// way without the frame, the smallest section kept: one symbol wins 0.5-4.5 %
-// on some (triceratops, soup, fertility, hero: corpus geometry -0.23 % if
-// done on every mesh), no frame on some CAD meshes and terrains (tray-bottom,
-// casting, mountain); a large mesh would take four times as long.
+// way without the frame, the smallest section kept: one symbol per choice
+// wins on some scans, no frame on some CAD meshes and terrains; a large
+// mesh would take four times as long (docs/tuning.md).
 constexpr size_t kEveryTreeCodingUpTo = 32768;
 // On those meshes the cheapest-first tree is also grown over each vertex's
 // 8, 2 and 16 nearest neighbours (TreeNeighbours), not only its 4 nearest:
-// which count codes smallest differs from mesh to mesh (turbine -31 % over
-// the 16 nearest, genus3 -7 % over the 2 nearest, igea +2.5 % over the 8).
-// Below kOtherCountsEveryWayBelow vertices, the 8 and 2 nearest under the
-// first way, and the count of the three that codes smallest there under
-// every other way (whole files: mushroom 1.7 %, genus3 1.2 %, fertility
-// 0.6 % smaller than with the 8 and 2 nearest under the best way alone);
-// from there, under the best way only: on the corpus's meshes of 16,384
-// to 32,768 vertices that gives the same files, for 2 more trees grown
-// instead of up to 5. (From 16,384 vertices a spanning tree far behind is
+// which count codes smallest differs from mesh to mesh. Below
+// kOtherCountsEveryWayBelow vertices, the 8 and 2 nearest under the first
+// way, and the count of the three that codes smallest there under every
+// other way; from there, under the best way only, which on the corpus's
+// meshes of 16,384 to 32,768 vertices gives the same files for fewer trees
+// grown (docs/tuning.md). (From 16,384 vertices a spanning tree far behind is
 // also given up, against the cheapest-first tree coded the same way:
 // under every way, that could be a tree over another count, and a
 // spanning tree given up against it might have ended smaller than the
 // tree over the 4 nearest.) The 16 nearest, whose tree
 // prices several times as many neighbours a step, under the best way only
-// (where the first way chose among 16 too, blobby-3cc and mushroom grew:
-// 16 won there and lost under other ways).
+// (chosen among the others under the first way, 16 can win there and lose
+// under the other ways).
 constexpr size_t kOtherCountsEveryWayBelow = 16384;
 TreeNeighbours treeNeighboursFor(size_t vertices) {
     if (vertices < kOtherCountsEveryWayBelow) return TreeNeighbours::SeveralEveryWay;
@@ -71,8 +67,7 @@ GeometryEncoding encodeTree(const std::vector<int32_t>& grid, int bits, Neighbou
                               small ? FrameUse::Smaller : FrameUse::On, trials, threads, treeNeighboursFor(grid.size() / 3));
 }
 // Refine's coarse grid: candidates pile up on it, and a tree grown and
-// coded with one symbol per choice often wins (dinosaur-24k 14.05 -> 13.67
-// bits per vertex): both are tried.
+// coded with one symbol per choice often wins: both are tried.
 GeometryEncoding encodeRefineCoarse(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
                                     GeometryTreeTrials* trials, int threads) {
     return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::On, trials,
@@ -117,9 +112,9 @@ const GeometryCoderEntry kCoders[] = {
     // counts the encoder tries (encodeConnectivity), not a section swap.
     {GeometryCoder::Refine, "refine", encodeRefineCoarse, nullptr, decodeRefineCoarse, refineBitsOfRefine,
      encodeRefineLowBits, decodeRefineLowBits},
-    // It beat the tree on the corpus only where the tree spent 19.9 bits a
-    // vertex or more (hero; soup 32.6); below 16 its sort and coding are
-    // not tried (2 % of igea's encoding time, at 8 bits a vertex).
+    // Tried only where the tree spends 16 bits a vertex or more: it wins
+    // only well above that, and its sort and coding take encoding time
+    // (docs/tuning.md).
     {GeometryCoder::Sorted, "sorted", encodeSorted, &kCoders[0], decodeSorted, noRefineBits, nullptr, nullptr, 16.0},
 };
 constexpr size_t kCoderCount = sizeof kCoders / sizeof kCoders[0];

@@ -1,6 +1,6 @@
 // The simplest lossless geometry section: every grid coordinate in `bits`
-// bits, packed LSB first. A stand-in until the point-cloud coder lands; the
-// decoded vertex order is the input order.
+// bits, packed LSB first: the fallback for tiny sets, and the coder that
+// keeps the input's numbering (the decoded vertex order is the input order).
 #ifndef DRM_RAW_CODER_H
 #define DRM_RAW_CODER_H
 

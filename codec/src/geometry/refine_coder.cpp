@@ -35,12 +35,9 @@ int64_t floorDiv(int64_t a, int64_t b) {  // b > 0
 // the one predictor its file names; the encoder follows all of them at
 // once: the refinement order and the refined positions are the same for
 // every predictor, so the neighbours are gathered once a vertex (about
-// two fifths of a pass: genus3's encoding 4.15 -> 3.94 G instructions),
-// and only predictions, contexts and symbols are each predictor's own.
-// Modes, the number of predictors followed, is fixed at compile time, so
-// that the decoder's one-predictor loops unroll (armadillo-43k's decoding
-// 1.3655 G instructions with one predictor per class, 1.3756 G with a
-// run-time count, 1.3701 G so).
+// two fifths of a pass), and only predictions, contexts and symbols are
+// each predictor's own. Modes, the number of predictors followed, is fixed
+// at compile time, so that the decoder's one-predictor loops unroll.
 template <size_t Modes>
 class Refiner {
 public:
@@ -87,7 +84,7 @@ public:
     }
 
     const std::vector<uint32_t>& order() const { return order_; }
-    // A predictor the encoder gave up on is no longer followed.
+    // A predictor the encoder gives up on is not followed further.
     void drop(int mode) { modes_[size_t(mode)].live = false; }
     bool live(int mode) const { return modes_[size_t(mode)].live; }
 
@@ -316,9 +313,9 @@ RefinePayload readRefinePayload(const uint8_t* data, size_t size, int bits) {
 
 // Every predictor, followed together in one pass (Refiner), the smallest
 // stream kept (the first of equal ones). A predictor is dropped as soon as
-// its stream must take more than maxBytes. Until the twenty-first session
-// the predictors were coded one after the other, each dropped once it had
-// to grow past the best so far: the same streams and the same choice.
+// its stream must take more than maxBytes. One pass for all shares the
+// neighbours' gathering; the streams and the choice are those of coding
+// each predictor alone.
 Refinement encodeRefinement(const std::vector<int32_t>& fine, int lowBits, const std::vector<uint32_t>& triangles,
                             size_t maxBytes) {
     const std::vector<int32_t> coarse = coarsenGrid(fine, lowBits);

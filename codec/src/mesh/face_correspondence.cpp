@@ -17,9 +17,9 @@ struct Keyed {
 // The faces by key, faces with equal keys in face order. A key begins with
 // its face's smallest vertex: a counting sort on that places every face,
 // then each run (the few faces around one vertex) is sorted by the rest. A
-// stable sort of all faces cost igea's encoder 193 M instructions of its
-// 6.3 G; this takes no more memory than the keys and one count a vertex
-// (the sort's buffer took half the keys again).
+// stable sort of all faces would take about 3 % of an encoding's
+// instructions; this takes no more memory than the keys and one count a
+// vertex (the sort's buffer would take half the keys again).
 Keyed keyOf(const std::vector<uint32_t>& t, uint32_t f) {
     const uint32_t* c = &t[3 * size_t(f)];
     Keyed best{{c[0], c[1], c[2]}, f, 0};

@@ -169,9 +169,8 @@ std::string topologyProblem(const std::vector<uint32_t>& t, size_t vertexCount, 
     // cycle. Each face (v, a, b) around v is v's edge to a, and steps from
     // a to b; the step on from b is v's edge to b, looked up in v's own
     // list. So the test reads only that list and its faces. (A union of
-    // corners joined across each edge read other vertices' lists at
-    // random: the whole check took twice as long, and igea x4's encoding
-    // 4 % more CPU.)
+    // corners joined across each edge would read other vertices' lists at
+    // random: the whole check would take twice as long.)
     size_t firstSeen = SIZE_MAX;  // corner order, as a face-by-face test meets it
     uint32_t twoFanVertex = 0;
     std::vector<uint32_t> next;

@@ -24,8 +24,9 @@ struct MeshTopology {
     // Each vertex's outgoing directed edges, by far end, in one array:
     // those of a are out[start[a] .. start[a + 1]). Read in vertex order,
     // as the traversal mostly reads them, they lie together (a hash table
-    // of the edges sent every look-up to a random place, a cache miss on a
-    // large mesh), and they take 52 bytes a vertex instead of 144.
+    // of the edges would send every look-up to a random place, a cache miss
+    // on a large mesh), and they take 52 bytes a vertex where such a table
+    // takes 144.
     struct Outgoing {
         uint32_t to, face;
     };

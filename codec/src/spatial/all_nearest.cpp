@@ -52,9 +52,9 @@ int chooseShift(const SortedPoints& sorted, size_t k) {
     size_t cells = 1;
     for (int s = kCoordinateBits; s >= 0; --s) cells += splitsFrom[s];
     // Narrowest first: the first width whose cells hold k / 4 points (at
-    // least 2) on average (on a surface the block around a cell then holds about 4k:
-    // horse, k = 8, 2.5 points a cell, 30 a block, 5 % of the points
-    // uncertain; at twice the width, 121 a block and twice the time).
+    // least 2) on average (on a surface the block around a cell then holds
+    // about 4k points and a few per cent of the points stay uncertain; at
+    // twice the width a block holds four times as many: docs/tuning.md).
     // Distinct positions, not points, count: a stack of coincident points
     // does not make a cell any fuller around the others.
     const size_t perCell = std::max<size_t>(2, k / 4), distinct = cells;
@@ -100,10 +100,10 @@ std::vector<uint32_t> nearestOfEachByCells(const std::vector<int32_t>& grid, siz
     }
     std::vector<uint64_t> tableKey(tableSize, ~uint64_t(0));
     std::vector<uint32_t> tableCell(tableSize, 0);
-    // The product's top bits, which every bit of the key reaches (bits 20
-    // and up, as taken before, never depended on x, the key's bits 42 and
-    // up: cells sharing y and z collided, and probing took a third of the
-    // graph's time on igea).
+    // The product's top bits, which every bit of the key reaches (the
+    // product's bits from 20 up alone never depend on x, the key's bits 42
+    // and up: cells sharing y and z would collide and probing would take
+    // much of the graph's time).
     auto slotOf = [&](uint64_t key) { return size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - tableBits)); };
     for (size_t c = 0; c < cellCount; ++c) {
         const int32_t* first = &sorted.at[3 * size_t(cellStart[c])];

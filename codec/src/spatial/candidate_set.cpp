@@ -13,12 +13,9 @@ constexpr int kMaxShift = 26;  // coordinates span less than 2^26 (real grids: 2
 
 // Mean vertices per occupied cell the cell size aims at (the size steps by
 // halving, so the occupancy lands within [target / 2, 2 target)). Around an
-// edge the predictor looks about two edge lengths away, and since format 4
-// the rank's nearest candidates come from that same ball: visiting fewer,
-// fuller cells costs less than skipping vertices in finer ones. Decoding,
-// 8 against 4: bunny 877M -> 825M instructions, igea -6.9 %, crank (far
-// ranks) 4.6 -> 2.4 s; encoding bunny -1 %; fandisk and venus land on the
-// same size either way.
+// edge the predictor looks about two edge lengths away, and the rank's
+// nearest candidates come from that same ball: visiting fewer, fuller
+// cells costs less than skipping vertices in finer ones (docs/tuning.md).
 constexpr uint64_t kTargetOccupancy = 8;
 // The occupancy is first counted on a coarse grid of at most 64 cells per
 // axis (a 32 KB bitmap); surfaces keep about 4x fewer vertices per cell with
@@ -113,7 +110,7 @@ VertexIndex::VertexIndex(const std::vector<int32_t>& grid, int cellShift) {
     // Where the box is not much larger than the surface in cells (no far
     // outlier), a dense table of columns answers without hashing: the
     // searches look up a column per (x, y) they visit, about 25 per query,
-    // and the hashed look-up was 7 % of decoding bunny.
+    // and a hashed look-up each is a visible share of the decoding time.
     const uint64_t perAxis = uint64_t(lastCell_) + 1;
     if (perAxis <= (uint64_t(1) << 16) && perAxis * perAxis <= 2 * uint64_t(n) + 4096) {
         denseColumns_.assign(size_t(perAxis * perAxis), kNoColumn);

@@ -146,10 +146,8 @@ private:
     }
 
     // Balls more than this many cells in radius are searched faster
-    // through the hierarchy (wideBallRadius; the caller decides). Decoding
-    // cycloidal (leaves of 8 cells, before the fixed-point test), 2, 5, 6
-    // and 8 cells: 2.87, 2.63, 2.63 and 2.64 G instructions; bunny within
-    // 3 M.
+    // through the hierarchy (wideBallRadius; the caller decides): the
+    // fewest instructions decoding the CAD mesh cycloidal (docs/tuning.md).
     static constexpr int64_t kWideBallCells = 6;
     // forEachNearInOrder's hierarchy: a binary tree of boxes over the cells
     // taken in Morton order of their coordinates (hierarchyCells_), halved
@@ -157,10 +155,8 @@ private:
     // follows it), each node with the count of present vertices under it,
     // so that culled regions are passed over whole. Made when first asked
     // for (only meshes with long edges ask), then kept up to date by
-    // remove(). Decoding cycloidal (before the boxes were tested in fixed
-    // point), leaves of 2, 4 and 8 cells with balls over 3 cells wide: 2.86,
-    // 2.78 and 2.75 G instructions; of 8 and 16 with balls over 6: 2.63 and
-    // 2.67 G.
+    // remove(). Leaves of 8 cells: fewer instructions than 2, 4 or 16
+    // decoding cycloidal (docs/tuning.md).
     static constexpr size_t kLeafCells = 8;
     struct Node {
         int32_t box[6];       // as cellBoxes_, around every cell under the node
@@ -273,8 +269,8 @@ void VertexIndex::forEachNearInOrder(Vec3 q, double radius, Lowest lowest, Limit
     if (nodes_.empty()) buildHierarchy();
     // As forEachNear: one unit wider than the ball, so that float rounding
     // of q and radius cannot drop a vertex on its surface, and boxes tested
-    // in fixed point (integer maxima: no branch, where the doubles' took
-    // one that a branch predictor missed one time in six).
+    // in fixed point (integer maxima compile without a branch; the maxima
+    // of doubles take one that a branch predictor misses one time in six).
     if (!(q.x == q.x && q.y == q.y && q.z == q.z) || radius < 0) return;  // NaN: the ball misses the grid
     const double reach = radius + 1.0;
     const bool everywhere = !(reach < double(int64_t(1) << 26));  // also NaN

@@ -9,11 +9,12 @@
 
 namespace drm {
 
-// Measured on the corpus (docs/speed.md, "Grid or FLANN"): the grid is
-// faster for the traversal's searches, each of which looks at a few dozen
-// vertices around one point while vertices are culled.
+// The grid is faster for the traversal's searches, each of which looks at a
+// few dozen vertices around one point while vertices are culled
+// (docs/tuning.md).
 constexpr NeighbourIndex kTraversalDefault = NeighbourIndex::Grid;
-// The k-nearest graph of the geometry tree: see docs/speed.md.
+// The grid is faster for the geometry tree's k-nearest graph too: its
+// search by cells (all_nearest.h) answers every vertex at once.
 constexpr NeighbourIndex kNeighbourGraphDefault = NeighbourIndex::Grid;
 
 NeighbourIndex resolveIndex(NeighbourIndex choice, IndexRole role) {
@@ -70,8 +71,8 @@ private:
     const std::vector<int32_t>& grid_;
     // The cells, made when first asked for: the 8-nearest graph asks only
     // for the few points its own search by cells leaves uncertain, once
-    // that search has freed its tables (igea x4: 35 MB that would have
-    // stood beside its 17 MB).
+    // that search has freed its tables, so the two sets of tables (the
+    // cells' about twice the search's) never stand side by side.
     const VertexIndex& cells() const { return built(); }
     VertexIndex& cells() { return built(); }
     VertexIndex& built() const {
@@ -93,8 +94,8 @@ void GridIndex::nearest(const FixedPoint& p, size_t count, VertexFilter accept, 
 }
 
 // Every vertex at once by cells (all_nearest.h), then the vertices that
-// pass leaves uncertain one by one: the same answers (igea's 8-nearest
-// graph 806 M -> 565 M instructions, horse 293 M -> 185 M).
+// pass leaves uncertain one by one: the same answers as a search per
+// vertex, in about two thirds of its instructions.
 void GridIndex::nearestOfEach(size_t count, std::vector<uint32_t>& neighbours, std::vector<int64_t>* distance2,
                               int threads) const {
     const size_t n = grid_.size() / 3;
@@ -178,7 +179,8 @@ void GridIndex::manyNearest(const FixedPoint& p, size_t count, VertexFilter acce
 // answer is the one among the last chunk's accepted that makes up the
 // count, selected again. A vertex is asked once: a settling that fails has
 // asked every vertex nearer than its clearance, and keeps those accepted.
-// (Sorting the rings for it took most of crank's decoding time.)
+// (Sorting the rings would take most of the decoding time of a mesh with
+// many far ranks, such as the CAD mesh crank.)
 size_t GridIndex::nthNearest(const FixedPoint& p, size_t count, VertexFilter accept, RankedVertex& out) const {
     if (count <= kFewNearest) {  // the list of a few, in the index's own scratch
         nearest(p, count, accept, candidates_);

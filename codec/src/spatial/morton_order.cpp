@@ -11,7 +11,7 @@ uint64_t keyOf(const std::vector<int32_t>& grid, uint32_t v) { return mortonKeyO
 
 // Digits of the least-significant-digit radix sort: 11 bits, so a 12-bit
 // grid's 36-bit keys take 4 passes over 2,048 counters (a comparison sort
-// of igea's 134,345 keys took several times as long).
+// takes several times as long).
 constexpr int kDigitBits = 11;
 constexpr size_t kBuckets = size_t(1) << kDigitBits;
 

@@ -1,13 +1,14 @@
 // The vertices in Morton order of their grid points: the order the
-// connectivity numbers them in from format 9 (docs/format.md, "Format 9"),
-// and the order coder 4 codes them in.
+// connectivity numbers them in (docs/format.md, "Vertex numbering"), and
+// the order coder 4 codes them in.
 //
-// Format 9 numbers the connectivity's vertices by their positions alone
-// (points sharing a grid point keep the geometry section's order), not by
-// the order the vertex coder happens to decode them in. The ranks' ties
-// are broken by index, so until format 8 the encoder could not rank a
-// single edge before its vertex coder had finished; now, on a mesh whose
-// points are all distinct, it ranks them while the vertex set is coded.
+// The connectivity numbers its vertices by their positions alone (points
+// sharing a grid point keep the geometry section's order), not by the
+// order the vertex coder happens to decode them in. The ranks' ties are
+// broken by index, so in the vertex coder's numbering
+// (kFlagSectionNumbering) the encoder cannot rank a single edge before its
+// vertex coder has finished; in Morton order, on a mesh whose points are
+// all distinct, it ranks them while the vertex set is coded.
 #ifndef DRM_MORTON_ORDER_H
 #define DRM_MORTON_ORDER_H
 

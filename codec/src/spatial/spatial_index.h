@@ -147,7 +147,7 @@ public:
 enum class IndexRole { Traversal, NeighbourGraph };
 
 // The index `choice` names, or for NeighbourIndex::Auto the faster one for
-// this role (measured: docs/speed.md).
+// this role (measured: docs/tuning.md, kTraversalDefault).
 NeighbourIndex resolveIndex(NeighbourIndex choice, IndexRole role);
 
 // cellShift: cells 2^cellShift grid units wide; by default sized to the

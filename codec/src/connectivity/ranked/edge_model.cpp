@@ -15,9 +15,9 @@ namespace {
 // Confidence of the distance order: the ratio of the two nearest candidate
 // distances (method notes). A clear winner (small ratio) makes rank 1 far
 // likelier than a near tie does. Large meshes have codes enough to teach six
-// buckets; small ones learn faster with three (nefertiti, 562 faces: 1.66 bpv
-// with three, 1.71 with six). Ratios are compared on squared distances in
-// 128 bits, exactly: r < t  <=>  d1 * 10000 < d2 * (100 t)^2.
+// buckets; small ones learn faster with three (docs/tuning.md). Ratios are
+// compared on squared distances in 128 bits, exactly:
+// r < t  <=>  d1 * 10000 < d2 * (100 t)^2.
 constexpr int kMaxConfidenceBuckets = 6;
 constexpr uint64_t kFineBucketsFromFaces = 4096;
 // Gap-closing edges get two contexts of their own: the gap vertex is, or is
@@ -27,23 +27,18 @@ constexpr int kDistanceContexts = kGapContext + 2;
 // With angle order, every distance context comes twice: the angle order's
 // first candidate is, or is not, also the nearest one.
 constexpr int kDisagreementOffset = kDistanceContexts;
-// Four: 3 and 5 are within 1% of it; 2 and 6 lose 2-8% (paper models).
+// The angle order sorts the four nearest candidates: the best count on the
+// paper's models (docs/tuning.md).
 constexpr size_t kAngleOrdered = 4;
-// Format 5: edges ranked in the front order (front neighbours after rank 1)
-// have a context set of their own: rank 2 is likelier there (corpus whole
-// file geomean against format 4: 0.9961 with, 0.9968 without; adis16480
-// 7.57 against 7.61 bits per vertex, tray-bottom 6.09 against 6.26;
-// measured with the first forgetting rule below, every edge at shift 9).
+// Edges ranked in the front order (front neighbours after rank 1) have a
+// context set of their own: rank 2 is likelier there.
 constexpr int kFrontOffset = 2 * kDistanceContexts;
 
 // The front order's score forgets 1/256 of itself on each edge where the
 // two orders would have cost different bits (a half-life of about 177 such
 // edges): it follows a mesh's regions (octopus) without flapping on smooth
-// meshes. Corpus whole file geomean against format 4: shift 6 0.9963
-// (genus3 +0.12 %), 7 0.9962, 8 0.9962 (no mesh over +0.10 %). Forgetting
-// on every edge instead, at shift 9, was as good, but needs the front
-// neighbours of every edge, also of the rank-1 ones (bunny decode +2 %
-// instructions, against +1 %).
+// meshes (docs/tuning.md). Forgetting only on those edges spares the front
+// neighbours of the rank-1 ones, which a decoder never needs.
 constexpr int kFrontMemoryShift = 8;
 
 // log2(rank) in 1/16 bits, the fraction read linearly from the four bits
@@ -55,9 +50,8 @@ int64_t log2Sixteenths(uint32_t rank) {
 }
 
 // What a rank costs, roughly, in 1/16 bits: log2(rank), so rank 1 costs
-// nothing and every doubling one bit. (2 log2(rank) + 1, an Elias-gamma
-// length, did as well; whole bit lengths let small meshes grow by up to
-// 0.3 % at shift 5, against 0.2 % with this.)
+// nothing and every doubling one bit. Fractions of a bit, not whole bit
+// lengths, keep the score steady on small meshes.
 int64_t rankCost(uint32_t rank) { return log2Sixteenths(rank); }
 
 int confidenceBucket(const std::vector<RankedVertex>& nearest, bool fine) {
@@ -88,21 +82,22 @@ double cosineSubtended(Vec3 a, Vec3 b, Vec3 v) {
     return uu == 0 || ww == 0 ? 1.0 : dot(u, w) / std::sqrt(uu * ww);
 }
 
-// Format 10, the boundary flag's context class (0 .. 8; format 11 adds the
-// seam's, below):
-// where the size step found the first vertex ahead of the edge (in its
-// first ball, in a wider one, or nowhere: past an open border there is
-// nothing ahead), and how many of the fans at the edge's ends already end
-// on a coded boundary (0, 1 or 2: a border is coded edge after edge). On
-// mountain, a terrain with one border, 634 of the 636 boundary edges have
-// no vertex ahead, against 23 of its 50,561 other edges.
+// The boundary flag's context class (0 .. 8; the two connectivity parts
+// add the seam's, below): where the size step found the first vertex
+// ahead of the edge (in its first ball, in a wider one, or nowhere: past
+// an open border there is nothing ahead), and how many of the fans at the
+// edge's ends already end on a coded boundary (0, 1 or 2: a border is
+// coded edge after edge). On mountain, a terrain with one border, 634 of
+// the 636 boundary edges have no vertex ahead, against 23 of its 50,561
+// other edges.
 int boundaryClass(int firstAheadAttempt, const FanEnds& ends) {
     const int ahead = firstAheadAttempt == 0 ? 0 : firstAheadAttempt > 0 ? 1 : 2;
     return 3 * ahead + int(ends.boundaryAtI) + int(ends.boundaryAtJ);
 }
-// Format 11's parts (connectivity_parts.h): edges on the seam's side take
-// classes of their own, by the fans' ends as above. Most of them are coded
-// as boundary edges, the seam, in both parts: 946 of bunny's 69,451 flags.
+// The two connectivity parts (connectivity_parts.h): edges on the seam's
+// side take classes of their own, by the fans' ends as above. Most of them
+// are coded as boundary edges, the seam, in both parts (about 1.4 % of
+// bunny's flags).
 constexpr int kSeamBoundaryClass = 9;
 static_assert(kSeamBoundaryClass + 3 == kBoundaryClasses, "three seam classes");
 
@@ -189,12 +184,12 @@ const EdgeForecast& EdgeModel::forecastRank(const OpenEdge& edge) {
     return f;
 }
 
-// Format 5. The plain order is the one above: the gap-closing vertex alone,
-// or the nearest candidates (angle or distance order), or with neither
-// lever the nearest candidate alone (listing it changes no rank). The front
-// order puts the front neighbours that are not listed yet right after the
-// plain order's first, nearer to the prediction first. Either way every
-// other vertex follows by distance.
+// Front neighbours. The plain order is the one above: the gap-closing
+// vertex alone, or the nearest candidates (angle or distance order), or
+// with neither lever the nearest candidate alone (listing it changes no
+// rank). The front order puts the front neighbours that are not listed yet
+// right after the plain order's first, nearer to the prediction first.
+// Either way every other vertex follows by distance.
 void EdgeModel::forecastFrontOrder(const OpenEdge& edge, const FanEnds& ends) {
     EdgeForecast& f = forecast_;
     edge_ = edge;
@@ -247,8 +242,8 @@ void EdgeModel::findExtras() {
     }
 }
 
-// Format 5: the apex's rank in the order not used, from the one used (no
-// new search but in one case), and the score of the two orders.
+// Front neighbours: the apex's rank in the order not used, from the one
+// used (no new search but in one case), and the score of the two orders.
 void EdgeModel::learnOrder(uint32_t apex, const OpenEdge& edge) {
     const uint32_t used = lastRank_;
     lesson_ = {used, used, useFront_, plainListed_};
@@ -312,7 +307,7 @@ void EdgeModel::orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& ne
     }
     // Ahead before behind, then largest angle (smallest cosine) first; equal
     // keys keep distance order. An insertion sort, stable, of at most four:
-    // std::stable_sort asked for a temporary buffer on every edge.
+    // std::stable_sort would ask for a temporary buffer on every edge.
     for (size_t k = 1; k < count; ++k) {
         const std::pair<double, RankedVertex> moving = keyed[k];
         size_t at = k;

@@ -29,8 +29,6 @@ class EdgeModel {
 public:
     // faceCount sets how finely the coder contexts split (small meshes
     // cannot teach many contexts).
-    // formatVersion: the file's (from 4 on, the nearest candidates come
-    // from the predictor's ball; docs/format.md, "Format 4").
     EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature, const Levers& levers,
               uint64_t faceCount, const SpatialIndex& candidates, const Traversal& traversal,
               int formatVersion = kFileFormatVersion);
@@ -41,7 +39,7 @@ public:
     // How many coder contexts forecasts use (for the rank coder).
     int contextCount() const;
     // Whether forecasts carry a boundary class, so that the rank coder
-    // codes a boundary flag before each rank (format 10 with the lever).
+    // codes a boundary flag before each rank (the boundary lever).
     bool boundaryFlags() const { return boundaryLever_; }
 
     // The whole forecast: forecastBoundary, then forecastRank.
@@ -52,7 +50,7 @@ public:
     // flags a boundary edge's rank 0 is the flag alone, and nothing the
     // second half works out outlives the edge, so coders skip it there:
     // past the seam of two parts the nearest admissible vertex can lie far
-    // away (igea: 5 % of its decoding went to such searches).
+    // away (such searches would take about 5 % of igea's decoding).
     const EdgeForecast& forecastBoundary(const OpenEdge& edge);
     const EdgeForecast& forecastRank(const OpenEdge& edge);
     // Both use the forecast made last, for the same edge.
@@ -61,7 +59,7 @@ public:
     // Whether v may close edge (the encoder checks its true apex against the
     // rule the decoder will apply).
     bool admissible(uint32_t v, const OpenEdge& edge) const { return admissible_(v, edge); }
-    // Format 11: this model ranks the first of two connectivity parts,
+    // Two parts: this model ranks the first of two connectivity parts,
     // whose second part holds the faces over vertices from `first` on
     // (connectivity_parts.h). Before the first forecast.
     void setSeam(uint32_t first) {
@@ -69,7 +67,7 @@ public:
         seamSide_.seam = first;
         if (seamFirstBall_) predictor_.searchFirstBallOnlyOn(&seamSide_);
     }
-    // Format 11: this model ranks the second part, whose first vertex has
+    // Two parts: this model ranks the second part, whose first vertex has
     // Morton key `key`: an edge whose prediction lies at a grid point of
     // smaller key points into the first part's region, across the seam
     // (its boundary flag then has a class of its own). Before the first
@@ -84,7 +82,7 @@ public:
     // vertexOfRank of that edge (the rank they gave is part of the lesson).
     void resolved(uint32_t apex);
 
-    // Format 5, front-neighbour lever: the ranks the apex of the last
+    // The front-neighbour lever: the ranks the apex of the last
     // resolved edge had in the order without front neighbours (`plain`) and
     // in the order with them (`front`), and whether that edge was ranked in
     // the front order. Equal when the edge had no front neighbour to add,
@@ -99,11 +97,11 @@ public:
 
 private:
     void orderByAngle(const OpenEdge& edge, std::vector<RankedVertex>& nearest) const;
-    // The `count` admissible vertices nearest p: from the predictor's ball
-    // (format 4), or from a search of their own.
+    // The `count` admissible vertices nearest p: from the predictor's last
+    // ball when it searched one, or from a search of their own.
     const std::vector<RankedVertex>& nearestCandidates(const FixedPoint& p, size_t count, const OpenEdge& edge);
-    // Format 5: the front order's list for the forecast edge, and which
-    // list ranks it; learnOrder keeps score after the apex is known.
+    // Front neighbours: the front order's list for the forecast edge, and
+    // which list ranks it; learnOrder keeps score after the apex is known.
     void forecastFrontOrder(const OpenEdge& edge, const FanEnds& ends);
     void learnOrder(uint32_t apex, const OpenEdge& edge);
     void findExtras();
@@ -125,12 +123,12 @@ private:
     } disagreement_;
     uint32_t angleWins_ = 0, distanceWins_ = 0;
 
-    // Format 5, front neighbours (docs/format.md, "Format 5").
+    // The front neighbours lever (Levers::frontNeighbours).
     bool frontLever_;
-    // Format 10, boundary flags (docs/format.md, "Format 10").
+    // The boundary flag lever (Levers::boundaryFlag).
     bool boundaryLever_;
-    // Format 11's parts: the seam's side, for the boundary flag's class
-    // and (format 12) the size step; the predictor points at it.
+    // The two connectivity parts: the seam's side, for the boundary flag's
+    // class and the size step; the predictor points at it.
     SeamSide seamSide_;
     bool seamFirstBall_;  // format 12: the size step stops at the first ball on the seam's side
     // The forecast's list (nearest) holds the order used: the plain one,

@@ -201,7 +201,7 @@ double ApexPredictor::lowestAhead(const Slab& slab, const int32_t* box) {
 // then the others. A run whose box holds no vertex ahead (lowestAhead) or
 // lies above the best height found so far is passed over: the lowest box
 // is looked at first, then the others in turn, each passed over if it lies
-// above the best by then (sorting them all cost more than it spared).
+// above the best by then (sorting them all costs more than it spares).
 ApexPredictor::FirstAhead ApexPredictor::firstAheadByRuns(const Slab& slab, const OpenEdge& edge) const {
     FirstAhead best = firstAheadInBall(slab, edge);  // the runs listed before the ball was found too full
     byHeight_.clear();

@@ -33,9 +33,8 @@ Vec3 baseApex(Predictor kind, Vec3 a, Vec3 b, Vec3 o);
 struct PredictorTuning {
     // The slab ahead of the edge that the size correction searches extends
     // this many edge lengths beyond each end of the edge: apexes of right
-    // and obtuse triangles sit just outside the edge's own span. 0.75
-    // measured best with all levers on (0.5 and 1.0 lose 2-7% on the paper's
-    // irregular models; fandisk prefers 0.5 by 1%).
+    // and obtuse triangles sit just outside the edge's own span. 0.75 is
+    // the best with all levers on (docs/tuning.md).
     double slabWidening = 0.75;
     // Curvature: at most this many vertices, within this many edge lengths.
     int curvatureNeighbours = 10;
@@ -67,15 +66,14 @@ public:
     void forEachInBall(const FixedPoint& p, Bound bound, Visit visit) const;
     // Which of the last predict()'s balls held the first vertex ahead (0:
     // the first; 1 to 3: one of the wider ones), or -1 if none did or none
-    // was searched. The boundary flag's context (format 10).
+    // was searched. The boundary flag's context.
     int firstAheadAttempt() const { return firstAheadAttempt_; }
-    // Format 12, two connectivity parts (connectivity_parts.h): on the
+    // Two connectivity parts (connectivity_parts.h): on the
     // seam's side, where the first ball holds no vertex ahead, the wider
     // balls are not searched and the prediction stays as it is. Across the
     // seam they find no vertex the part may take, or a far one, at the cost
-    // of balls of up to 8 times the first's radius: with both halves of
-    // the forecast (EdgeModel::forecastBoundary), bunny's decoding took
-    // 6.4 % more instructions in two parts than in one, 2.0 % without them.
+    // of balls of up to 8 times the first's radius (bunny's decoding in two
+    // parts takes about 4 % fewer instructions so: docs/tuning.md).
     // The seam's side is `side`'s (EdgeModel's seam classes), tested on
     // the prediction before the size step (the same point when the rule
     // stops it), with or without boundary flags; `side` must outlive the
@@ -131,10 +129,8 @@ private:
     // rest is room), until the runs held more than kListUpToPoints
     // vertices; the later runs as they are (runs_), searched run by run,
     // passing over runs that cannot hold an answer. Most balls are listed
-    // whole (runs_ empty). Decoding, callgrind, limits 32 / 64 / 128 /
-    // 256: bunny 764 / 751.5 / 752.1 / 752.8 M instructions (750 when every
-    // ball was listed), crank 5.36 / 5.40 / 5.49 / 5.64 G (9.96), adis16480
-    // 672 / 677 / 687 / 713 M (1,104).
+    // whole (runs_ empty). The limit trades scans (listing is cheapest) for
+    // CAD meshes' wide balls (docs/tuning.md).
     struct BallVertex {
         uint32_t id;
         const int32_t* point;
@@ -197,7 +193,7 @@ void ApexPredictor::forEachInBall(const FixedPoint& p, Bound bound, Visit visit)
     // Each run's nearest possible point, exactly (the box's gap to p per
     // axis, in fixed point). The nearest run first, since it sets the bound
     // soonest; then the others in turn, each passed over if it lies beyond
-    // the bound by then (sorting them all cost more than it spared).
+    // the bound by then (sorting them all costs more than it spares).
     byDistance_.clear();
     size_t nearest = 0;
     for (uint32_t r = 0; r < runs_.size(); ++r) {

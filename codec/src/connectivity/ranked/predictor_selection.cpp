@@ -21,7 +21,7 @@ PredictorVotes countPredictorVotes(const std::vector<uint32_t>& t, size_t vertex
     // Squared distance from each vertex to its nearest neighbour in the
     // mesh, over every face's edges: read from each vertex's own edges out
     // (the same edges; in vertex order the far ends lie near, where the
-    // faces in input order sent each update anywhere).
+    // faces in input order would send each update anywhere).
     std::vector<double> nearestNeighbour2(vertexCount, std::numeric_limits<double>::infinity());
     for (size_t a = 0; a < vertexCount; ++a)
         for (uint32_t e = topology.start[a]; e < topology.start[a + 1]; ++e) {
@@ -34,17 +34,14 @@ PredictorVotes countPredictorVotes(const std::vector<uint32_t>& t, size_t vertex
     // Each face votes once, through one of its edges (the k-th for the
     // voting face number k modulo 3), with its third vertex as the opposite and the
     // apex of the face across as the target: as the traversal attaches
-    // each face through one edge, but without running it. The same winner
-    // as the traversal's votes on all 64 corpus meshes at 12 bits, for
-    // 138 M instructions instead of 363 M on igea.
+    // each face through one edge, but without running it: the same winner
+    // as the traversal's votes on every corpus mesh at 12 bits, in well
+    // under half the instructions.
     //
     // Over kVotingFaces faces, every stride-th face votes, at most
-    // kVotingFaces and at least half as many (each face's
-    // look-ups land anywhere: 3.5 % of encoding igea x4). The share of
-    // parallelogram votes moved by at most 0.0011 against every face's on
-    // igea x4 and on bunny, horse and crank x16, fandisk x64 (0.8 to 1.6 M
-    // faces), none across one half; igea, the one corpus mesh of over
-    // kVotingFaces faces, by 0.0001 (every third face).
+    // kVotingFaces and at least half as many (each face's look-ups land
+    // anywhere in memory); the share of parallelogram votes then moves by
+    // about a thousandth at most (docs/tuning.md).
     const size_t stride = std::max<size_t>(1, (faceCount + kVotingFaces - 1) / kVotingFaces);
     PredictorVotes votes;
     for (size_t f = 0; f < faceCount; f += stride) {

@@ -259,9 +259,8 @@ void codeNewVertex(Io& geometry, WalkState& st, const OpenEdge& edge, const int6
 }
 
 // OtherSearchBound's test once `searched` front vertices have been read for
-// apexes elsewhere on the front: "" within it, else what passed it. (The
-// corpus reads at most 71 a face, dragon-res3; scans 6, from igea to igea
-// subdivided twice, 4.3 M faces; the bound is 4096.)
+// apexes elsewhere on the front: "" within it, else what passed it. (No
+// corpus mesh reads a fiftieth of the bound's 4096 a face: docs/tuning.md.)
 std::string pastSearchBound(const WalkState& st, uint64_t searched) {
     const uint64_t faces = st.traversal.triangleCount();
     if (searched <= st.search.floor + st.search.perFace * faces) return std::string();

@@ -1,7 +1,8 @@
 // A topological connectivity coder with positions in the order it meets
-// them: format 13's connectivity coder 2, the encoder's per-file
-// alternative for meshes the distance ranks code poorly (sliver-rich CAD
-// and STL meshes; docs/format.md, "Coder 2: topological").
+// them: connectivity coder 2, the encoder's per-file alternative for
+// meshes the distance ranks code poorly (sliver-rich CAD and STL meshes;
+// docs/format.md, "Coder 2: topological (connectivity and geometry
+// payloads)").
 // `drm-topology-study` prices it against the distance-ranked file.
 //
 // Why a second coder: a distance rank must name the apex of each triangle
@@ -16,7 +17,7 @@
 // triangle go to the front of the deque, the left one first, so the walk
 // closes the region it is in before it turns back and the front stays about
 // one loop, as in Edgebreaker (with the paper's order, right edges to the
-// back, a sixth of tray-bottom's edges found their apex elsewhere on the
+// back, a sixth of tray-bottom's edges find their apex elsewhere on the
 // front). Each open edge codes one symbol: boundary, new vertex, the far end
 // of the fan at its first or at its second end, or another vertex already
 // met, then named by its distance rank from the parallelogram prediction
@@ -70,8 +71,8 @@ struct OtherSearchBound {
 // What an encoder comparing coders can tell this one.
 struct TopologicalBudget {
     // The mesh passed topologyProblem already (as the caller's cut mesh
-    // does): not checked again (horse: 86 of the coder's 378 M instructions;
-    // building the edge table alone takes 33 M).
+    // does): not checked again (the check would take nearly a quarter of
+    // the coder's instructions).
     bool meshChecked = false;
     // Give up once a quarter of the faces or more is coded and the bytes so
     // far, scaled to every face, pass this (0: never): the other coder's

@@ -44,9 +44,9 @@ private:
     static constexpr uint64_t kEmpty = ~uint64_t(0);  // keys use 63 bits
     size_t find(uint64_t key) const {
         // The slot is the product's top bits, which every bit of the key
-        // reaches (the bits from 20 up, as taken before, never depended on
-        // the x field, bits 42 and up: cells sharing y and z collided and
-        // a third of predict() went to probing). Which slot a key gets
+        // reaches (the product's bits from 20 up alone never depend on the
+        // x field, bits 42 and up: cells sharing y and z would collide and
+        // probing would take much of predict()). Which slot a key gets
         // changes nothing but speed.
         const size_t mask = keys_.size() - 1;
         size_t slot = size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - slotBits_));

@@ -13,7 +13,7 @@
 //
 // A normal fixes the third axis only; the first two may also be turned
 // about it (alignFirstAxis) so that the first points along a direction the
-// coder knows, the way the surface was last walked (format 7).
+// coder knows, the way the surface was last walked.
 #ifndef DRM_LOCAL_FRAME_H
 #define DRM_LOCAL_FRAME_H
 
@@ -40,10 +40,10 @@ public:
         hasNormal_ = true;
         // The loops below halve or double one step at a time; most of the
         // way is taken first in one shift, which the loops then finish
-        // exactly as before: fewer halvings than the largest component's
-        // excess bit length never bring it below the limit (floor(v / 2^k)
-        // is k halvings), and doubling the largest component 20 - its bit
-        // length times brings it to 2^19 or over, one less not.
+        // exactly as they would alone: fewer halvings than the largest
+        // component's excess bit length never bring it below the limit
+        // (floor(v / 2^k) is k halvings), and doubling the largest component
+        // 20 - its bit length times brings it to 2^19 or over, one less not.
         shiftToNormalBits(nx, ny, nz);
         while (magnitude(nx) >= kNormalLimit || magnitude(ny) >= kNormalLimit || magnitude(nz) >= kNormalLimit) {
             nx = halve(nx);

@@ -20,9 +20,9 @@ inline int lengthOf(int32_t v) { return 63 - __builtin_clzll(2 * uint64_t(magnit
 constexpr int kMagnitudeContexts = 8;
 constexpr int kMaxLength = 23;      // bit lengths of residuals of 21-bit coordinates
 constexpr int kAdaptiveLowBits = 2; // bits below the leading one with a model
-// Format 6: a residual's sign in a context of two signs already known (each
-// none, + or -): the parent's on the same axis and this vertex's on the
-// axis before. Format 5 and earlier: one sign model (context 0).
+// A residual's sign in a context of two signs already known (each none, +
+// or -): the parent's on the same axis and this vertex's on the axis
+// before. The topological coder uses model 0 alone.
 constexpr int kSignContexts = 9;
 
 // The models of one axis' residuals.
@@ -32,7 +32,8 @@ struct AxisModels {
     BitModel sign[kSignContexts];
     BitModel low[kMaxLength + 1][kAdaptiveLowBits];  // by bit length, 1..kMaxLength
 
-    // Every model agile (BitModel::agile): format 2's vertex coder.
+    // Every model agile (BitModel::agile), as the spanning-tree vertex
+    // coder's are.
     void makeAgile() {
         for (BitModel& m : zero) m = BitModel::agile();
         for (auto& byContext : longer)

@@ -32,8 +32,8 @@ NearestNeighbours nearestNeighbours(const std::vector<int32_t>& grid, NeighbourI
         return result;
     }
     // Exactly, on the integer grid (either index gives the same graph).
-    // Without the distances: 8 bytes a neighbour (igea x4: 34 MB, the
-    // encoder's peak while the early connectivity runs beside). The one
+    // Without the distances: 8 bytes a neighbour, which would raise the
+    // encoder's peak while the early connectivity runs beside. The one
     // distance a vertex needs here is worked out again.
     makeSpatialIndex(grid, index, IndexRole::NeighbourGraph)->nearestOfEach(size_t(k), result.neighbours, nullptr,
                                                                                   threads);
@@ -65,7 +65,7 @@ NearestNeighbours nearestOnly(const NearestNeighbours& nearest, int k) {
 
 namespace {
 
-// A fixed number of flags, one bit each (std::vector<bool> took more
+// A fixed number of flags, one bit each (std::vector<bool> takes more
 // instructions than the searches these spare).
 class Bits {
 public:
@@ -133,8 +133,8 @@ struct Edge {
 // the front (at most n - 1), in the order taken. Edges are taken shortest
 // first (`shorter`, a strict order), a chunk of n at a time: only the chunk
 // is sorted, and once it is joined, the longer edges whose ends the forest
-// already joins are dropped unsorted (most of them: sorting them all was
-// most of the forest's cost). So this forest is the one a full sort gives.
+// already joins are dropped unsorted (most of them: sorting them all would
+// be most of the forest's cost). So this forest is the one a full sort gives.
 template <typename E, typename Shorter, typename EndsOf>
 size_t joinShortestFirst(std::vector<E>& edges, size_t n, Shorter shorter, EndsOf endsOf) {
     const size_t chunk = std::max<size_t>(n, 1024);
@@ -177,7 +177,7 @@ Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbour
         return !(w < v && std::find(theirs, theirs + k, uint32_t(v)) != theirs + k);
     };
     // Counted before they are stored: room for k edges a vertex (128 bytes
-    // a vertex) was the largest block of the encoder's peak on igea, and
+    // a vertex) would be the largest block of the encoder's peak, and
     // mutual pairs are kept once. Which are kept is remembered from the
     // count, a bit per neighbour: the searches of the other end's list cost
     // as much as the rest of both passes.
@@ -192,9 +192,8 @@ Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbour
     // Kruskal's forest over the kept edges (joinShortestFirst). Where the
     // longest squared length and both ends fit in 64 bits (at the default
     // 12 bits, always up to 2^19 vertices; igea x4's short edges fit too),
-    // each edge is one number in the same order: sorting those took half
-    // the instructions of sorting triples (horse: the forest 71.5 -> 63.9 M
-    // instructions; igea x4's encoding 0.97 to 0.98 of the CPU).
+    // each edge is one number in the same order: sorting those takes half
+    // the instructions of sorting triples.
     Length longest = 0;  // the last of each vertex's nearest is its farthest
     for (size_t v = 0; v < n; ++v) {
         size_t found = 0;
@@ -240,7 +239,7 @@ Forest spanningForestOf(const std::vector<int32_t>& grid, const NearestNeighbour
     }
     edges.shrink_to_fit();
     // Each vertex's forest edges as (squared length, other end), all in one
-    // array: a vector per vertex cost 24 bytes and an allocation each.
+    // array: a vector per vertex would cost 24 bytes and an allocation each.
     std::vector<uint32_t> offset(n + 1, 0);
     for (const Edge<Length>& e : edges) {
         ++offset[e.a + 1];

@@ -38,8 +38,8 @@ struct NeighbourGraph {
 NeighbourGraph symmetricGraph(const NearestNeighbours& nearest, int count);
 
 // A forest as child lists in one array: the children of v are
-// child[start[v] .. start[v + 1]) (a vector per vertex cost 24 bytes and an
-// allocation each, about 50 bytes a vertex in all).
+// child[start[v] .. start[v + 1]) (a vector per vertex would cost 24 bytes
+// and an allocation each, about 50 bytes a vertex in all).
 struct Forest {
     std::vector<uint32_t> start;  // vertexCount() + 1 entries
     std::vector<uint32_t> child;

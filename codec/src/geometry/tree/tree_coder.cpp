@@ -29,15 +29,9 @@ int cellBitsFor(double spacing, int bits) { return std::min(bits, bitLength(uint
 namespace {
 
 // How many nearest neighbours of each vertex the encoder's tree may take
-// as its children (joined both ways): 4 by default (the corpus's geometry
-// sections in total: 1,715,078 bytes over 4, 1,710,079 over 5, 1,711,209
-// over 6, 1,714,852 over 8, 1,736,935 over 3). The count that codes
-// smallest differs from mesh to mesh (the best of the trees and ways for
-// each count: turbine 8,877 bytes over 4, 7,165 over 8; genus3
-// 9,372 over 4, 8,740 over 2; igea 134,152 over 4, 137,483 over 8; the
-// corpus -1.6 % with the best count of the six for each mesh, -1.3 % with
-// the best of 4, 8 and 2, -1.0 % of 4 and 8; over 16, with a graph of 16
-// nearest, turbine 6,084 and crank 57,602 against 66,154 over 4):
+// as its children (joined both ways): 4 by default, within a fraction of a
+// per cent of the best single count over the corpus (docs/tuning.md). The
+// count that codes smallest differs from mesh to mesh, so
 // TreeNeighbours::Several and SeveralEveryWay try 4, 8, 2 and 16 (below),
 // the first of equal sections kept.
 constexpr int kTreeNeighbours = 4;
@@ -224,30 +218,23 @@ std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const st
 // kAbandonFromStep sixteenths on, it is given up if it has spent more than
 // kAbandonOverRival times what the cheapest-first section spent on the
 // same vertices. Compared vertex for vertex the two settle early: on the
-// corpus at 12 bits the large meshes where the spanning tree wins (crank,
-// octopus) stay under 1.00 from 4/16 on, those where it loses run over
-// 1.015 all the way (format 6: igea 1.03, bunny 1.02, horse 1.05; format
-// 7: igea and bunny 1.023 to 1.029 from 2/16 to 4/16); a comparison of
-// the sections' sizes at the same fraction of the way would compare
-// different vertices and could not tell igea from crank. Small meshes are
+// corpus the large meshes where the spanning tree wins (crank, octopus)
+// stay under 1.00 from 4/16 on, those where it loses run over 1.015 all
+// the way (docs/tuning.md); a comparison of the sections' sizes at the
+// same fraction of the way would compare different vertices and could not
+// tell a scan such as igea from a CAD mesh such as crank. Small meshes are
 // left out: they cost little either way, and there the spanning tree can
 // win after trailing by 10 % (teapot). The first sixteenth is left out of
-// both sums: it is mostly the models learning, and it held a spanning tree
-// that wins by half against what it would win later (a regular lattice of
-// 20,000 points: 1.83 times the cheapest-first tree's bits over its first
-// sixteenth, 1.48 over two, 0.51 at the end; octopus coded with one symbol
-// per choice, 1.021 over two, 0.987 at the end).
+// both sums: it is mostly the models learning, and a spanning tree that
+// wins in the end can trail far behind over it (on a regular lattice,
+// nearly twice the cheapest-first tree's bits).
 constexpr size_t kSteps = 16;
 constexpr double kAbandonOverRival = 1.015;
 constexpr size_t kAbandonFromStep = 4;
 constexpr size_t kAbandonFromVertices = 16384;
 // Before that, from 2/16 on, a tree more than 1.8 % behind is given up:
-// the clear losers are (format 7 at 12 bits, the first trial: igea 1.023
-// at 2/16, bunny 1.029, nefertiti-50k 1.033, venus 1.045, horse 1.056,
-// feline 1.062), the winners are not (crank 1.011, octopus 1.008,
-// falconstatue 1.012); every corpus file is the same as with format 6's
-// 3 % (igea was 1.038 then; at 3 %, format 7 would code igea's rival to
-// 4/16: 2.7 % more instructions to encode it).
+// the clear losers on the corpus are, the winners are not, and the files
+// are those of a looser margin, for less encoding time (docs/tuning.md).
 constexpr double kAbandonEarlyOverRival = 1.018;
 constexpr size_t kAbandonEarlyFromStep = 2;
 
@@ -315,23 +302,21 @@ constexpr size_t kForestBesideFromVertices = 16384;
 // FourUnlessRegular (TreeNeighbours): the other counts' trees are given up
 // where their extrapolated sections run this share of the tree over the 4
 // nearest past the best section so far (as refine's estimates are,
-// encoder.cpp).
+// encode/refine_policy.cpp).
 constexpr double kRegularCountsMargin = 0.03;
 // Above this many vertices FourUnlessRegular is Four: the search for 16
 // nearest, the wider graphs and the pick bits would add to the encoder's
-// peak memory, measured there (igea x4, docs/speed.md), and the vertex
-// section is then coded beside the early connectivity (encoder.cpp).
+// peak memory where it is highest, the vertex section being coded beside
+// the early connectivity there (encode/encode_session.h).
 constexpr size_t kRegularUpToVertices = size_t(1) << 18;
 
 // Two trees, each with the choice coded both ways, the smallest section
 // kept (the decoder reads any the same way): the cheapest-first tree wins
-// on most meshes (fandisk 13.26 -> 10.30 bpv, bunny 11.44 -> 11.32), the
-// minimum spanning tree with its children ordered straight on still wins on
-// some regular CAD meshes (blade 3.67 against 4.20, tray-bottom 8.50
-// against 9.56). Flags win on most meshes (bunny 11.31 -> 10.90 bpv); one
-// symbol on coarse grids, where candidates pile up (refine's coarse tree:
-// dinosaur-24k 14.05 -> 13.67), and on some artist meshes (hero 21.29 ->
-// 20.91).
+// on most meshes (fandisk: 10.30 bits a vertex against the spanning tree's
+// 13.26), the minimum spanning tree with its children ordered straight on
+// on some regular CAD meshes (blade: 3.67 against 4.20). Flags win on most
+// meshes; one symbol on coarse grids, where candidates pile up (refine's
+// coarse tree), and on some artist meshes (hero).
 GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, NeighbourIndex index,
                                     GeometryTree which, ChoiceCoding choices, FrameUse frames,
                                     GeometryTreeTrials* trials, int threads, TreeNeighbours treeNeighbours) {
@@ -383,8 +368,8 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         orderChildrenForPrediction(grid, spanning);
     };
     // With a second thread, the spanning forest is built there while the
-    // cheapest-first tree grows here (igea: 7 % of its encoding); it is
-    // the same forest.
+    // cheapest-first tree grows here (the forest is about 7 % of a scan's
+    // encoding); it is the same forest.
     std::future<void> forestBuilding;
     if (threads >= 2 && which == GeometryTree::Smaller && grid.size() / 3 >= kForestBesideFromVertices) {
         bool uncoded = false;
@@ -419,9 +404,9 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits, 
         NeighbourGraph& graph = graphs[count];
         if (graph.offset.empty()) graph = symmetricGraph(*trials->nearest, kTreeNeighbourCounts[count]);
         CodingLog log;
-        // Scans log 11 to 15 words a vertex (igea 12.9, horse 13.9, igea x4
-        // 11.3): reserved, the log is not grown by doubling, which held up
-        // to three times its size while it moved.
+        // Scans log 11 to 15 words a vertex: reserved, the log is not grown
+        // by doubling, which would hold up to three times its size while it
+        // moves.
         log.reserve(16 * (grid.size() / 3));
         GeometryEncoding coded;
         const int bitsKey = treeBitsKey(count, flagChoices, frame);

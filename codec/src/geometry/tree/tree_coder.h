@@ -27,11 +27,11 @@ struct GeometryEncoding {
 // Which tree the encoder builds: by default both, keeping the smaller
 // section (the decoder reads either the same way).
 enum class GeometryTree { Smaller, CheapestFirst, SpanningTree };
-// How the section names each vertex's predictor (format 2): one flag per
+// How the section names each vertex's predictor (its bit F): one flag per
 // candidate, or one symbol over all; by default both are tried.
 enum class ChoiceCoding { Smaller, Flags, Symbol };
 // Whether the section may code residuals from the parent in its local
-// frame (format 3's bit G); by default both are tried.
+// frame (its bit G); by default both are tried.
 enum class FrameUse { Smaller, On, Off };
 // Which nearest neighbours of each vertex the cheapest-first tree may take
 // as its children. Four: its 4 nearest. Several: also its 8, 2 and 16
@@ -51,10 +51,10 @@ enum class TreeNeighbours { Four, Several, SeveralEveryWay, FourUnlessRegular };
 struct NearestNeighbours;
 
 // What a cheapest-first tree is held to while it grows (refine's estimate,
-// encoder.cpp; FourUnlessRegular's other counts): another tree over the
-// same vertices, coded earlier, and the section size this one must stay
-// under. After each sixteenth of its
-// vertices from the fourth on, the tree extrapolates its size from what
+// encode/refine_policy.cpp; FourUnlessRegular's other counts): another
+// tree over the same vertices, coded earlier, and the section size this
+// one must stay under. After each sixteenth of its vertices from the
+// fourth on, the tree extrapolates its size from what
 // its vertices cost so far against what the same vertices cost in the
 // rival (each as priced when it was picked: residual and choice, child
 // counts left out), and is given up (the section comes back empty) where

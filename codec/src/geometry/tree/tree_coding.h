@@ -14,13 +14,12 @@
 namespace drm {
 namespace tree_coding {
 
-// Each residual group's context per axis. In format 3 the residual from the
-// parent (the whole tree edge) takes its contexts from the local spacing
-// instead (from its bit length, on the frame's tangent axes and, smaller,
-// on the third, the normal when the frame is on): the residuals of the
-// previous vertex and the parent are mostly small corrections from other
-// candidates and say little about an edge's length (tree geometry -0.5 %;
-// offsets 2 and 6 against 1-4 and 4-10: within 0.1 %).
+// Each residual group's context per axis. The residual from the parent
+// (the whole tree edge) takes its contexts from the local spacing instead
+// when there is one (from its bit length, on the frame's tangent axes and,
+// smaller, on the third, the normal when the frame is on): the residuals
+// of the previous vertex and the parent are mostly small corrections from
+// other candidates and say little about an edge's length (docs/tuning.md).
 inline void magnitudeContexts(const CodingState& s, const Predictions& p, uint32_t self, uint32_t parent,
                        int (*contexts)[3]) {
     for (int a = 0; a < 3; ++a) contexts[0][a] = contexts[1][a] = magnitudeContext(s, self, parent, a);
@@ -92,7 +91,8 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     // Every vertex, whichever candidate named it, tells how its tree edge
     // would have fared in the frame: the choice of candidate 0 itself
     // depends on the frame, so learning only from those would keep a frame
-    // that is off from ever being tried (nefertiti-50k: -0.1 % instead of -5 %).
+    // that is off from ever being tried (a scan such as nefertiti-50k would
+    // then lose nearly all the frame's gain).
     if (s.framedParent)
         s.frameScore = s.frameScore - s.frameScore / CodingState::kFrameMemory + 256 * frameAdvantage(p.frame, at - p.candidate(0)) +
                        (s.tangentSigns ? CodingState::kFrameCredit : 0);

@@ -1,6 +1,7 @@
 // The spanning-tree vertex coder's decoder (docs/format.md, "Geometry
-// coder 1"): the tree walked in the order the encoder wrote it, each
-// vertex read through the same coding functions (tree_coding.h).
+// payload, coder 2: spanning tree"): the tree walked in the order the
+// encoder wrote it, each vertex read through the same coding functions
+// (tree_coding.h).
 #include "geometry/tree/tree_coder.h"
 
 #include <string>

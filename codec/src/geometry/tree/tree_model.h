@@ -61,8 +61,9 @@ struct Predictions {
     // Two candidates crowd each other when no coordinate differs by more
     // than this: a fifth of the spacing.
     int32_t crowdRadius = 0;
-    // Format 3 codes the residual from the parent (candidate 0) in this
-    // frame: the surface's normal at the parent as its third axis.
+    // With the section's bit G the residual from the parent (candidate 0)
+    // may be coded in this frame: the surface's normal at the parent as its
+    // third axis.
     LocalFrame frame;
     // Each candidate's flag context (flagContextOf), once known: the
     // encoder asks for it again when it codes the flag it priced.
@@ -82,7 +83,7 @@ struct Predictions {
     }
 };
 
-// Format 2 can name the predictor (when the section's bit F is 1) with a
+// The section can name the predictor (when its bit F is 1) with a
 // yes/no flag per candidate, in index order, each in a context of what the
 // decoder can see about it:
 // - how near it lies to a decoded point (under a quarter, half, or one
@@ -92,9 +93,8 @@ struct Predictions {
 // - whether another candidate crowds it.
 // A candidate equal to an earlier one has no flag, nor has the last one
 // left (a "no" to every other names it). Against one symbol over all
-// candidates this is 2 % smaller on the corpus (docs/geometry-ablation.md,
-// "Format 2"); one symbol still wins on coarse grids, where candidates
-// pile up.
+// candidates this is smaller on the corpus (docs/tuning.md); one symbol
+// still wins on coarse grids, where candidates pile up.
 constexpr int kDistanceBuckets = 4;
 inline int distanceBucket(const Predictions& p, int c) {
     if (p.spacing2 == 0) return kDistanceBuckets - 1;
@@ -113,7 +113,7 @@ inline int distanceBucket(const Predictions& p, int c) {
     return 3;
 }
 // Four lanes at once (GCC and Clang vector extensions: SSE2 on x86-64,
-// NEON on ARM, plain code elsewhere); the compilers left the scalar loop
+// NEON on ARM, plain code elsewhere); the compilers leave the scalar loop
 // unvectorized, at about 140 instructions a call.
 typedef uint32_t Lanes __attribute__((vector_size(16)));
 typedef int32_t SignedLanes __attribute__((vector_size(16)));
@@ -156,23 +156,22 @@ inline int nextFlagged(const Predictions& p, int c) {
     return next;
 }
 
-// Format 2 also codes the residual from the parent itself (the whole tree
-// edge) with models of its own, apart from the residuals from the other
-// candidates, which are small corrections; format 1 has one set.
+// The residual from the parent itself (the whole tree edge) has models of
+// its own, apart from the residuals from the other candidates, which are
+// small corrections.
 constexpr int kResidualGroups = 2;
-// Format 6's signs of coded residuals, as sign contexts see them.
+// The signs of coded residuals, as sign contexts see them.
 enum Sign : uint8_t { kNoSign = 0, kPositive = 1, kNegative = 2 };
 inline uint8_t signOf(int32_t r) { return r > 0 ? kPositive : r < 0 ? kNegative : kNoSign; }
 
 inline int residualGroup(bool version2, uint32_t choice) { return version2 && choice != 0 ? 1 : 0; }
 
-// Format 2 codes a child count in a context of the parent's own child
-// count (1, 2, 3 or more: a parent has at least one; roots apart); format 1
-// has one table.
+// A child count is coded in a context of the parent's own child count (1,
+// 2, 3 or more: a parent has at least one; roots apart).
 constexpr int kChildCountContexts = 4;
 
-// Format 7: the sign of each tangent component of a residual coded in the
-// frame has one of 27 models (tangentSignModel).
+// The sign of each tangent component of a residual coded in the frame has
+// one of 27 models (tangentSignModel).
 constexpr int kTangentSignContexts = 27;
 
 // Everything both sides track while walking the tree.
@@ -195,14 +194,12 @@ struct CodingState {
     BitModel tangentSign[2][kTangentSignContexts];                   // format 7: [tangent axis][context]
     std::vector<AdaptiveFrequencies> childCount;                     // [context]
     uint32_t previousChoice = 0;
-    // Format 3: whether the local frame has lately coded edges from the
-    // parent in fewer bits than the grid's axes (> 0): after every vertex,
-    // both sides add 256 times the difference in rough bits and decay the
-    // sum by 1/kFrameMemory (8: 2 and 4, 32 and 128 all measured worse, by
-    // 0.1 to 0.17 % of geometry). Format 7 credits the frame one rough bit
-    // more per vertex: its tangent signs cost less than the bit each that
-    // rough bits count (corpus whole file -0.2 % in geometric mean over
-    // format 7 without it; elephant -2.2 %, horse-lres -1.7 %).
+    // Whether the local frame has lately coded edges from the parent in
+    // fewer bits than the grid's axes (> 0): after every vertex, both sides
+    // add 256 times the difference in rough bits and decay the sum by
+    // 1/kFrameMemory (the best of 2 to 128: docs/tuning.md). The frame gets
+    // one rough bit more per vertex (kFrameCredit): its tangent signs cost
+    // less than the bit each that rough bits count.
     static constexpr int64_t kFrameMemory = 8;
     static constexpr int64_t kFrameCredit = 256;
     int64_t frameScore = 0;
@@ -246,9 +243,9 @@ struct CodingState {
           cells(cellBits),
           predictorChoice(kChoiceContexts, AdaptiveFrequencies(std::vector<uint16_t>(kMaxCandidates, 1))),
           childCount(kChildCountContexts, AdaptiveFrequencies(std::vector<uint16_t>(kDirectChildCounts + 1, 1))) {
-        // Format 2's models learn their first bits fast (BitModel::agile:
-        // 1.8 % smaller geometry on the corpus, up to 14 % on small meshes),
-        // and a flag, mostly "no", starts at 1/8.
+        // The models learn their first bits fast (BitModel::agile:
+        // small meshes, whose models see few bits, gain most), and a flag,
+        // mostly "no", starts at 1/8.
         for (auto& byCandidate : isChoice)
             for (auto& byDistance : byCandidate)
                 for (auto& byPrevious : byDistance)
@@ -280,13 +277,12 @@ struct CodingState {
     }
 };
 
-// Format 6: a sign context per axis. Residuals along the tree are not
+// A sign context per axis. Residuals along the tree are not
 // independent: where a candidate overshoots the surface (curvature, a
 // scanner's rows, a grid's regular steps) it tends to overshoot the same way
 // for the parent and the child, and one error leaks into several axes. The
 // parent's sign on the axis and this vertex's on the axis before name one of
-// nine models (corpus whole file -0.7 % in geometric mean; teapot -4 %,
-// igea -2 %, bunny -1 %).
+// nine models (the corpus's files 0.7 % smaller in geometric mean).
 inline int signContext(const CodingState& s, uint32_t self, uint32_t parent, int axis) {
     if (!s.signContexts) return 0;
     const int ofParent = s.signs[3 * size_t(parent) + size_t(axis)];
@@ -321,7 +317,7 @@ inline LocalFrame surfaceFrame(GridPoint at, const GridPoint* near, int m) {
     return LocalFrame(n[0], n[1], n[2]);
 }
 
-// Format 7 turns the frame about its normal so that its first axis points
+// The frame is turned about its normal so that its first axis points
 // the way the tree last went, from the parent's parent to the parent (a
 // depth-first walk tends to go on straight: the first tangent component of
 // the next edge is then mostly positive).
@@ -332,12 +328,12 @@ inline void turnAlongTheWalk(const CodingState& s, uint32_t parent, LocalFrame& 
     frame.alignFirstAxis(int64_t(at.x) - from.x, int64_t(at.y) - from.y, int64_t(at.z) - from.z);
 }
 
-// Format 7: where the near points lie in the frame's tangent plane: how
+// Where the near points lie in the frame's tangent plane: how
 // many have a positive and a negative first coordinate, and how many lie in
 // each quadrant [first < 0][second < 0] (points on an axis in none). A new
 // vertex seldom lies where decoded points already are, so these tell the
-// signs of a residual coded in the frame (venus-lres and max-planck-5k
-// -2 % whole file, feline -1 %). Worked out only for such a residual.
+// signs of a residual coded in the frame (up to 2 % off a scan's whole
+// file). Worked out only for such a residual.
 struct NearPointSides {
     uint8_t side[2] = {0, 0};
     uint8_t quadrant[2][2] = {{0, 0}, {0, 0}};
@@ -355,7 +351,7 @@ inline NearPointSides nearPointSides(const Predictions& p) {
     return sides;
 }
 
-// Format 7: the sign model of tangent component `axis` (0 or 1) of a
+// The sign model of tangent component `axis` (0 or 1) of a
 // residual coded in the frame, of bit length `length`, from where the near
 // points lie and from how long the component is:
 // - the first component: by the near points on its positive and on its
@@ -415,13 +411,13 @@ inline Predictions predict(const CodingState& s, uint32_t self, uint32_t parent)
     return p;
 }
 
-// Format 3 codes the residual from the parent (the whole tree edge) in the
+// The residual from the parent (the whole tree edge) is coded in the
 // parent's local frame when the frame has lately served better than the
 // grid's axes: there the edge's component along the normal is small, which
-// pays on unevenly sampled scans (venus -4.2 % geometry, nefertiti-50k
-// -5.9 %); on CAD meshes whose edges follow the axes the axes serve better
-// (a zero component costs one cheap flag). The same residual models serve
-// both (models of their own for the frame: 0.15 % larger on the corpus),
+// pays on unevenly sampled scans (4 to 6 % of their geometry); on CAD
+// meshes whose edges follow the axes the axes serve better (a zero
+// component costs one cheap flag). The same residual models serve both
+// (models of their own for the frame make the corpus's files larger),
 // and other candidates' residuals, small corrections, stay on the axes
 // (rounding inflates them, per the method notes).
 inline bool framed(bool frameNow, uint32_t choice) { return frameNow && choice == 0; }

@@ -15,8 +15,7 @@ namespace tree_coding {
 // models, in bits: the residual per axis by its bit length, and naming the
 // candidate. Built once per step of the encoder, which then prices the
 // candidates of every vertex it might code next. (Floating point is fine
-// here: the choice is transmitted, the decoder never repeats this.) The
-// encoder writes format 2 only.
+// here: the choice is transmitted, the decoder never repeats this.)
 //
 // Naming candidate c with flags costs the "no" flags of the candidates
 // before it, each in a context that takes work to find (flagContextOf), so
