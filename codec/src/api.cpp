@@ -3,6 +3,7 @@
 #include <string>
 
 #include "drm/drm.h"
+#include "connectivity/connectivity_coders.h"
 #include "geometry/geometry_coders.h"
 
 namespace drm {
@@ -54,12 +55,9 @@ Predictor parsePredictor(const std::string& name) {
 }
 
 const char* connectivityCoderName(ConnectivityCoder c) {
-    switch (c) {
-        case ConnectivityCoder::Auto: return "auto";
-        case ConnectivityCoder::Ranks: return "ranks";
-        case ConnectivityCoder::Topological: return "topological";
-    }
-    return "unknown";
+    if (c == ConnectivityCoder::Auto) return "auto";
+    const ConnectivityCoderEntry* entry = connectivityCoderOf(c);
+    return entry ? entry->name : "unknown";
 }
 
 ConnectivityCoder parseConnectivityCoder(const std::string& name) {

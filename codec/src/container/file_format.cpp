@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string>
 
+#include "connectivity/connectivity_coders.h"
 #include "container/byte_io.h"
 #include "container/crc32.h"
 #include "geometry/geometry_coders.h"
@@ -88,8 +89,8 @@ FileHeader decodeHeader(ByteReader& in, int version) {
         throw Error(ErrorKind::Corrupt, "corrupt file: unknown predictor " + std::to_string(predictor));
     h.predictor = Predictor(predictor);
     const uint8_t connectivity = in.u8("connectivity coder");
-    const bool topological = connectivity == uint8_t(ConnectivityCoder::Topological) && version >= kFirstFormatWithTopologicalCoder;
-    if (connectivity != uint8_t(ConnectivityCoder::Ranks) && !topological)
+    const ConnectivityCoderEntry* connectivityCoder = connectivityCoderById(connectivity);
+    if (!connectivityCoder)
         throw Error(ErrorKind::Unsupported, "unsupported file: unknown connectivity coder " + std::to_string(connectivity));
     h.connectivityCoder = ConnectivityCoder(connectivity);
     if (topological && h.twoParts)

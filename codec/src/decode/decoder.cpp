@@ -365,6 +365,44 @@ void dequantizeVertices(Decoding& d) {
 }
 
 void fillStats(Decoding& d, size_t fileSize) {
+// The vertex set coded first, then the ranks that rebuild the faces over
+// it (connectivity coder 1).
+void decodeByRanks(Decoding& d, const DecodeOptions& options, ProgressReporter& progress) {
+    progress.stage("decoding vertices", 0.01);
+    decodeVertices(d);
+    readRepairsBeforeTraversal(d);
+    progress.stage("decoding connectivity", 0.05);
+    decodeConnectivity(d, options, progress);
+    if (d.geometryCoder.decodeAfterConnectivity) {
+        progress.stage("refining vertices", 0.95);
+        refineVertices(d);
+    }
+}
+
+// Faces and positions together, in the order the topological walk meets
+// them (connectivity coder 2).
+void decodeByTopology(Decoding& d, const DecodeOptions&, ProgressReporter& progress) {
+    progress.stage("decoding vertices and connectivity", 0.01);
+    decodeTopologically(d, progress);
+}
+
+// The decoder's stage for each connectivity coder, keyed by the id the
+// header stores (connectivity_coders.h holds what a file may name).
+struct ConnectivityStage {
+    ConnectivityCoder id;
+    void (*decode)(Decoding& d, const DecodeOptions& options, ProgressReporter& progress);
+};
+constexpr ConnectivityStage kConnectivityStages[] = {
+    {ConnectivityCoder::Ranks, decodeByRanks},
+    {ConnectivityCoder::Topological, decodeByTopology},
+};
+const ConnectivityStage& connectivityStageOf(ConnectivityCoder id) {
+    for (const ConnectivityStage& stage : kConnectivityStages)
+        if (stage.id == id) return stage;
+    // readFile refuses ids connectivity_coders.h lacks, and each of those has a stage.
+    throw Error(ErrorKind::Internal, "internal error: no decoder for connectivity coder " + std::to_string(int(id)));
+}
+
     Stats& stats = d.result.stats;
     static const Repairs noRepairs;
     fillStatsFromHeader(stats, d.parts, fileSize);  // leaves the decoded figures (ranks, repairs, attributes) alone
@@ -383,20 +421,7 @@ Decoded decodeCore(const uint8_t* data, size_t size, const DecodeOptions& option
     Decoding d(parts, *geometryCoderOf(parts.header.geometryCoder));  // readFile refuses ids the table lacks
     d.result.grid = parts.header.grid;
 
-    if (parts.header.connectivityCoder == ConnectivityCoder::Topological) {
-        progress.stage("decoding vertices and connectivity", 0.01);
-        decodeTopologically(d, progress);
-    } else {
-        progress.stage("decoding vertices", 0.01);
-        decodeVertices(d);
-        readRepairsBeforeTraversal(d);
-        progress.stage("decoding connectivity", 0.05);
-        decodeConnectivity(d, options, progress);
-        if (d.geometryCoder.decodeAfterConnectivity) {
-            progress.stage("refining vertices", 0.95);
-            refineVertices(d);
-        }
-    }
+    connectivityStageOf(parts.header.connectivityCoder).decode(d, options, progress);
     if (d.repairs) undoRepairs(d);
     if (parts.header.keepsVertexOrder) restoreVertexOrder(d);
     if (!parts.attributes.empty()) {
