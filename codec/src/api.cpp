@@ -15,17 +15,6 @@ const char* leverName(int lever) {
     return lever >= 0 && lever < kLeverCount ? names[lever] : nullptr;
 }
 
-const RankPaletteEntry& rankPaletteEntry(int bucket) {
-    static const RankPaletteEntry palette[kRankBucketCount] = {
-        {64, 64, 64, "dark grey", "start triangle"},
-        {180, 192, 206, "pale blue-grey", "rank 1"},
-        {76, 175, 80, "green", "rank 2"},
-        {245, 166, 35, "orange", "rank 3"},
-        {214, 39, 40, "red", "rank 4+"},
-    };
-    return palette[bucket < 0 ? 0 : (bucket >= kRankBucketCount ? kRankBucketCount - 1 : bucket)];
-}
-
 const char* errorKindName(ErrorKind kind) {
     switch (kind) {
         case ErrorKind::InvalidInput: return "invalid input";

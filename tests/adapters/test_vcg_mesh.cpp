@@ -70,4 +70,15 @@ TEST(RankPalette, BucketsAreDistinctAndNamed) {
     EXPECT_EQ(std::string(drm::vcgio::rankBucketName(4)), "rank 4+");
 }
 
+TEST(RankPalette, BucketsAreClampedAndRanksBucketed) {
+    EXPECT_EQ(&drm::vcgio::rankPaletteEntry(-3), &drm::vcgio::rankPaletteEntry(0));
+    EXPECT_EQ(&drm::vcgio::rankPaletteEntry(drm::vcgio::kRankBucketCount + 7), &drm::vcgio::rankPaletteEntry(drm::vcgio::kRankBucketCount - 1));
+    std::set<std::string> labels;
+    for (int b = 0; b < drm::vcgio::kRankBucketCount; ++b) EXPECT_TRUE(labels.insert(drm::vcgio::rankPaletteEntry(b).label).second);
+    EXPECT_EQ(drm::vcgio::rankBucket(0), 0);
+    EXPECT_EQ(drm::vcgio::rankBucket(3), 3);
+    EXPECT_EQ(drm::vcgio::rankBucket(4), 4);
+    EXPECT_EQ(drm::vcgio::rankBucket(4000000000u), 4);
+}
+
 }  // namespace

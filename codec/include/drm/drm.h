@@ -81,22 +81,6 @@ constexpr int kDefaultUvBits = 12;
 // files of earlier, pre-release versions are refused (ErrorKind::Unsupported)
 // with a message naming their version.
 constexpr int kFileFormatVersion = 13;
-constexpr int kOldestReadableFormatVersion = 1;
-constexpr int kNewestReadableFormatVersion = 13;
-
-// The colours of distance ranks (`drm ranks`, `drm render --by-rank`, the
-// MeshLab rank filter, README's legend): bucket 0 is a component's start
-// triangle (stored, not ranked), buckets 1..3 ranks 1..3, bucket 4 ranks 4
-// and above.
-constexpr int kRankBucketCount = 5;
-struct RankPaletteEntry {
-    uint8_t r, g, b;
-    const char* colourName;  // "pale blue-grey"
-    const char* label;       // "rank 1"
-};
-// Buckets out of range are clamped to 0 .. kRankBucketCount - 1.
-const RankPaletteEntry& rankPaletteEntry(int bucket);
-inline int rankBucket(uint32_t rank) { return rank >= 4 ? 4 : int(rank); }
 
 // An indexed triangle mesh: xyz per vertex, three vertex indices per face.
 // Faces are oriented: (a, b, c) and (a, c, b) are different triangles.
