@@ -304,6 +304,45 @@ TEST(ChecksummedCorruption, Format7ReorderedStartTrianglesAreRefusedOrSound) {
     Verdicts v("format 7 start triangles rotated or flipped");
     forEachFormat7Header([](HeaderFields& h) { std::swap(h.startVertices[1], h.startVertices[2]); },
                          [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, "first start flipped");
+// A normal section whose bit width lies outside kMinNormalBits ..
+// kMaxNormalBits (behind a fresh checksum) is refused as corrupt: the
+// octahedral decoder is defined for those widths only.
+TEST(ChecksummedCorruption, NormalBitWidthsOutOfRangeAreRefused) {
+    // A bumpy 12 x 12 grid with its own normals.
+    drm::Mesh mesh;
+    const int side = 12;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const float z = 0.1f * float((x * 7 + y * 3) % 5);
+            mesh.positions.insert(mesh.positions.end(), {float(x), float(y), z});
+            const float n[3] = {0.1f * float(x % 3), 0.1f * float(y % 4), 1.0f};
+            const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            for (float c : n) mesh.normals.push_back(c / length);
+        }
+    for (int y = 0; y + 1 < side; ++y)
+        for (int x = 0; x + 1 < side; ++x) {
+            const uint32_t v = uint32_t(y * side + x);
+            mesh.triangles.insert(mesh.triangles.end(), {v, v + 1, v + side, v + 1, v + side + 1, v + side});
+        }
+    const Bytes file = drm::encode(mesh).bytes;
+    std::vector<drm_test::SectionSpan> sections;
+    ASSERT_TRUE(drm_test::parseSections(file, &sections));
+    const std::vector<Bytes> payloads = drm_test::payloadsOf(file, sections);
+    size_t normals = payloads.size();
+    for (size_t s = kGeometry + 1; s < payloads.size(); ++s)
+        if (payloads[s].size() > 4 && payloads[s][0] == 2) normals = s;  // semantic 2: normals
+    ASSERT_LT(normals, payloads.size()) << "no normal section";
+    ASSERT_EQ(int(payloads[normals][4]), drm::kDefaultNormalBits);  // the section's bit width
+    EXPECT_NO_THROW(drm::decode(file));
+    Verdicts v("normal bit widths out of range");
+    for (int bits : {0, 1, drm::kMinNormalBits - 1, drm::kMaxNormalBits + 1, 24, 31, 32}) {
+        Bytes payload = payloads[normals];
+        payload[4] = uint8_t(bits);
+        v.refused(drm_test::withPayload(file, normals, payload), "normal bits " + std::to_string(bits),
+                  drm::ErrorKind::Corrupt);
+    }
+}
+
     forEachFormat7Header(
         [](HeaderFields& h) { std::rotate(h.startVertices.begin(), h.startVertices.begin() + 1, h.startVertices.begin() + 3); },
         [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, "first start rotated");

@@ -475,7 +475,8 @@ void decodeAttributeSections(const FileParts& parts, Decoded& result) {
             (a.layout == AttributeLayout::Corner && a.semantic != AttributeSemantic::Normal &&
              a.semantic != AttributeSemantic::TexCoord) ||
             (a.semantic == AttributeSemantic::Color && a.bits != 8) ||
-            (a.semantic == AttributeSemantic::Normal && a.components != 2) ||
+            (a.semantic == AttributeSemantic::Normal &&
+             (a.components != 2 || a.bits < kMinNormalBits || a.bits > kMaxNormalBits)) ||
             (a.semantic == AttributeSemantic::TexCoord && a.components != 2) ||
             (a.semantic != AttributeSemantic::Color && a.semantic != AttributeSemantic::Normal &&
              a.semantic != AttributeSemantic::TexCoord && (a.components != 1 || a.bits != 32)) ||
