@@ -32,7 +32,6 @@ const char* predictorName(Predictor p) {
         case Predictor::Auto: return "auto";
         case Predictor::Parallelogram: return "parallelogram";
         case Predictor::Midpoint: return "midpoint";
-// Auto is an option, not a coder: the table holds what a file can store.
     }
     return "unknown";
 }
@@ -43,6 +42,7 @@ Predictor parsePredictor(const std::string& name) {
     throw Error(ErrorKind::InvalidInput, "unknown predictor '" + name + "' (use auto, parallelogram or midpoint)");
 }
 
+// Auto is an option, not a coder: the table holds what a file can store.
 const char* connectivityCoderName(ConnectivityCoder c) {
     if (c == ConnectivityCoder::Auto) return "auto";
     const ConnectivityCoderEntry* entry = connectivityCoderOf(c);

@@ -379,35 +379,41 @@ replace_files)
     echo "replace_files (as $(as_user id -un)): $(head -1 err.txt)"
     ;;
 readme_palette)
-    # README.md's legend of the rank colours is the palette drm ranks uses.
-    readme="$data/../../README.md"
-    for bucket in "start triangle" "rank 1" "rank 2" "rank 3" "rank 4+"; do
-        hex=$(palette_colour "$bucket")
-        [ -n "$hex" ] || fail "drm ranks lists no colour for $bucket"
-        grep -q "#$hex" "$readme" || fail "README.md does not give $bucket's colour #$hex"
-        # ... and `drm help ranks` names each colour as README's table does.
-        name=$(sed -n "s/^| \([a-z -]*\) | \`#$hex\` |.*/\1/p" "$readme")
-        run 0 help ranks
-        tr '\n' ' ' <out.txt | grep -q "$name: " || fail "drm help ranks does not name $bucket's colour '$name'"
+    # The legends of the rank colours in docs/cli.md and docs/meshlab.md are
+    # the palette drm ranks uses.
+    for doc in "$data/../../docs/cli.md" "$data/../../docs/meshlab.md"; do
+        for bucket in "start triangle" "rank 1" "rank 2" "rank 3" "rank 4+"; do
+            hex=$(palette_colour "$bucket")
+            [ -n "$hex" ] || fail "drm ranks lists no colour for $bucket"
+            grep -q "#$hex" "$doc" || fail "$(basename "$doc") does not give $bucket's colour #$hex"
+            # ... and `drm help ranks` names each colour as the doc's table does.
+            name=$(sed -n "s/^| \([a-z -]*\) | \`#$hex\` |.*/\1/p" "$doc")
+            [ -n "$name" ] || fail "$(basename "$doc")'s legend table has no row for #$hex"
+            run 0 help ranks
+            tr '\n' ' ' <out.txt | grep -q "$name: " || fail "drm help ranks does not name $bucket's colour '$name'"
+        done
+        ! grep -qi "#8c9aae" "$doc" || fail "$(basename "$doc") names the old rank-1 colour"
     done
-    ! grep -qi "#8c9aae" "$readme" || fail "README.md names the old rank-1 colour"
     ;;
 readme_limits)
-    # README.md and docs/format.md quote the limits and names drm.h holds,
-    # as `drm help encode` (filled in from drm.h) and a written file give them.
-    readme="$data/../../README.md"
+    # docs/cli.md, docs/meshlab.md and docs/format.md quote the limits and
+    # names drm.h holds, as `drm help encode` (filled in from drm.h) and a
+    # written file give them.
+    cli_doc="$data/../../docs/cli.md"
     format="$data/../../docs/format.md"
     run 0 help encode
     range=$(sed -n 's/.*quantization bits per axis, \([0-9]*\.\.[0-9]*\) .*/\1/p' out.txt)
     [ -n "$range" ] || fail "help encode gives no bits range: $(cat out.txt)"
-    grep -q "(${range%..*} to ${range#*..} bits per axis" "$readme" || fail "README.md does not give the bits range $range"
+    for doc in "$cli_doc" "$data/../../docs/meshlab.md"; do
+        grep -q "(${range%..*} to ${range#*..} bits per axis" "$doc" || fail "$(basename "$doc") does not give the bits range $range"
+    done
     grep -q "| quantization bits per axis | $range |" "$format" || fail "docs/format.md does not give the bits range $range"
     levers=$(sed -n 's/.*a list of \(.*\) (see docs.*/\1/p' out.txt | sed 's/, /,/g')
-    grep -q -- "--levers all|none|$levers]" "$readme" || fail "README.md's levers are not $levers"
+    grep -q -- "--levers all|none|$levers]" "$cli_doc" || fail "docs/cli.md's levers are not $levers"
     coders=$(sed -n 's/.*vertex coder: \(.*\) (default.*/\1/p' out.txt | sed 's/, /|/g; s/ or /|/')
-    grep -q -- "--geometry $coders]" "$readme" || fail "README.md's geometry coders are not $coders"
+    grep -q -- "--geometry $coders]" "$cli_doc" || fail "docs/cli.md's geometry coders are not $coders"
     predictors=$(sed -n 's/.*apex predictor: \(.*\) (default.*/\1/p' out.txt | sed 's/, /|/g; s/ or /|/')
-    grep -q -- "--predictor $predictors]" "$readme" || fail "README.md's predictors are not $predictors"
+    grep -q -- "--predictor $predictors]" "$cli_doc" || fail "docs/cli.md's predictors are not $predictors"
     run 0 encode "$data/torus.ply" torus.drm
     version=$(od -An -tu2 -j8 -N2 torus.drm | tr -d ' ')
     grep -q "^# The \`.drm\` file format, version $version\$" "$format" || fail "docs/format.md is not about version $version"
@@ -657,7 +663,7 @@ attribute_round_trip)
     run 0 encode "$data/attributes/vcolors.ply" probe.drm
     run 0 info probe.drm --json
     if grep -q '"attributes": \[\]' out.txt; then
-        echo "SKIP: this build's codec writes no attribute sections yet"
+        echo "SKIP: this build's codec writes no attribute sections"
         exit 77
     fi
     for file in "$data"/attributes/*.ply "$data"/attributes/*.obj; do

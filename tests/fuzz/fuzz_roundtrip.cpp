@@ -50,8 +50,8 @@ drm::EncodeOptions optionsFrom(FuzzedDataProvider& in) {
     o.keepVertexOrder = in.ConsumeBool();
     o.levers = {in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool()};
     o.tryWithoutLevers = in.ConsumeBool();
-    o.connectivityParts = in.ConsumeBool() ? 2 : 0;  // format 11's parts, forced on these small meshes
-    // Format 13: the topological coder alone codes its positions (no vertex
+    o.connectivityParts = in.ConsumeBool() ? 2 : 0;  // two parts, forced on these small meshes
+    // The topological coder alone codes its positions (no vertex
     // coder); Auto tries it where no option of the ranks' alone is set.
     o.connectivity = in.PickValueInArray({drm::ConnectivityCoder::Ranks, drm::ConnectivityCoder::Topological, drm::ConnectivityCoder::Auto});
     if (o.connectivity != drm::ConnectivityCoder::Ranks && in.ConsumeBool()) {

@@ -41,12 +41,12 @@ encode nefertiti nefertiti.ply --levers none --connectivity ranks  # open, the p
 encode blobby-3cc blobby-3cc.ply --keep-vertex-order --connectivity ranks  # 3 components with holes, all levers, vertex order kept
 encode star-raw star-cgal.ply --geometry raw --bits 8 --predictor parallelogram
 encode nefertiti-refine nefertiti.ply --geometry refine  # refine's coarse tree and low bits
-encode tray-bottom tray-bottom.ply --connectivity ranks  # CAD STL slivers: the front order (format 5) ranks many edges
-encode bunny-lres bunny-lres.ply --connectivity ranks    # a scan: edges from the parent in the frame along the walk, their tangent signs (format 7)
-encode shark-refine mech-holes-shark.ply --geometry refine --refine-bits 2  # refine's coarse tree with format 7's frame
-encode blobby-boundary blobby-3cc.ply --levers boundary --connectivity ranks  # holes, the boundary flags alone (format 10): the fans walked for them only
-encode bunny-lres-parts bunny-lres.ply --parts 2 --connectivity ranks  # a scan in two connectivity parts (format 11): the seam, its classes, kept vertices
-encode tray-bottom-topological tray-bottom.ply           # CAD STL slivers, left to the encoder: the topological coder (format 13)
+encode tray-bottom tray-bottom.ply --connectivity ranks  # CAD STL slivers: the front order ranks many edges
+encode bunny-lres bunny-lres.ply --connectivity ranks    # a scan: edges from the parent in the frame along the walk, their tangent signs
+encode shark-refine mech-holes-shark.ply --geometry refine --refine-bits 2  # refine's coarse tree with the frame along the walk
+encode blobby-boundary blobby-3cc.ply --levers boundary --connectivity ranks  # holes, the boundary flags alone: the fans walked for them only
+encode bunny-lres-parts bunny-lres.ply --parts 2 --connectivity ranks  # a scan in two connectivity parts: the seam, its classes, kept vertices
+encode tray-bottom-topological tray-bottom.ply           # CAD STL slivers, left to the encoder: the topological coder
 encode blobby-3cc-topological blobby-3cc.ply --connectivity topological --keep-vertex-order  # 3 components with holes, topological, vertex order kept
 encode fins-topological fins-and-bowtie.ply --connectivity topological  # a cut mesh: copies named at their originals' grid points, two originals on one point
 if [ $check = 1 ]; then

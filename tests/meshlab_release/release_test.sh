@@ -81,10 +81,10 @@ export)
     export_matches "$data/fandisk.ply" default fandisk
     grep -q "drm: note: fandisk.drm leaves out the vertex normals: they are the ones MeshLab computes" harness.txt ||
         fail "no note on the computed normals: $(grep 'drm:' harness.txt)"
-    # The README shows this save's log line.
-    readme_line=$(grep -m1 '^drm: saved fandisk.drm: ' "$project/README.md")
-    grep -qxF "log: filter: $readme_line" harness.txt ||
-        fail "README.md's log line is not what MeshLab logs: $(grep 'drm: saved' harness.txt | head -1)"
+    # docs/meshlab.md shows this save's log line.
+    doc_line=$(grep -m1 '^drm: saved fandisk.drm: ' "$project/docs/meshlab.md")
+    grep -qxF "log: filter: $doc_line" harness.txt ||
+        fail "docs/meshlab.md's log line is not what MeshLab logs: $(grep 'drm: saved' harness.txt | head -1)"
     export_matches "$data/fandisk.ply" 0 fandisk-none --attributes none
     # A coloured mesh with no other attribute, made with the CLI.
     "$drm" encode "$data/attributes/vcolors.ply" "$work/vcolors.drm" --attributes colors >/dev/null 2>&1 &&

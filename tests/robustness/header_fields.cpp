@@ -50,7 +50,7 @@ void appendDouble(std::vector<uint8_t>& out, double d) {
 
 }  // namespace
 
-bool readHeader(const std::vector<uint8_t>& payload, HeaderFields* h, int formatVersion) {
+bool readHeader(const std::vector<uint8_t>& payload, HeaderFields* h) {
     Reader in(payload);
     uint64_t v = 0;
     if (!in.fixed(2, &v)) return false;
@@ -69,16 +69,10 @@ bool readHeader(const std::vector<uint8_t>& payload, HeaderFields* h, int format
     if (!in.varint(&h->vertexCount) || !in.varint(&h->faceCount)) return false;
     if ((h->flags & kRepairsFlag) && !in.varint(&h->copyCount)) return false;
     if (!in.varint(&h->componentCount)) return false;
-    if (formatVersion < 8) {
-        if (h->componentCount > payload.size()) return false;
-        h->startVertices.resize(size_t(h->componentCount) * 3);
-        for (uint64_t& s : h->startVertices)
-            if (!in.varint(&s)) return false;
-    }
     return in.atEnd();
 }
 
-std::vector<uint8_t> writeHeader(const HeaderFields& h, int formatVersion) {
+std::vector<uint8_t> writeHeader(const HeaderFields& h) {
     std::vector<uint8_t> out;
     appendFixed(out, h.flags, 2);
     for (uint8_t b : {h.bits, h.predictor, h.connectivityCoder, h.geometryCoder}) out.push_back(b);
@@ -88,8 +82,6 @@ std::vector<uint8_t> writeHeader(const HeaderFields& h, int formatVersion) {
     appendVarint(out, h.faceCount);
     if (h.flags & kRepairsFlag) appendVarint(out, h.copyCount);
     appendVarint(out, h.componentCount);
-    if (formatVersion < 8)
-        for (uint64_t s : h.startVertices) appendVarint(out, s);
     return out;
 }
 

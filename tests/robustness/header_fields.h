@@ -22,16 +22,12 @@ struct HeaderFields {
     uint64_t vertexCount = 0;
     uint64_t faceCount = 0;
     uint64_t copyCount = 0;               // present only with kRepairsFlag
-    uint64_t componentCount = 0;          // written as is, even if it disagrees with startVertices
-    // Formats 1 to 7: 3 per component. From format 8 they are in the
-    // connectivity section (docs/format.md) and the header has only the count.
-    std::vector<uint64_t> startVertices;
+    uint64_t componentCount = 0;          // written as is
 };
 
-// False if payload is not exactly a header of that format version as the
-// format describes it.
-bool readHeader(const std::vector<uint8_t>& payload, HeaderFields* h, int formatVersion = 8);
-std::vector<uint8_t> writeHeader(const HeaderFields& h, int formatVersion = 8);
+// False if payload is not exactly a header as the format describes it.
+bool readHeader(const std::vector<uint8_t>& payload, HeaderFields* h);
+std::vector<uint8_t> writeHeader(const HeaderFields& h);
 
 }  // namespace drm_test
 

@@ -241,119 +241,6 @@ TEST(ChecksummedCorruption, ComponentCountsThatDoNotMatchAreRefused) {
             "component count " + std::to_string(delta));
 }
 
-Bytes fileBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    EXPECT_TRUE(in.good()) << path;
-    return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-// Formats 1 to 7 kept the start triangles in the header. The decoder
-// still reads them; format 7's golden files, damaged there.
-void forEachFormat7Header(const std::function<void(HeaderFields&)>& change,
-                          const std::function<void(const Bytes&, const std::string&)>& check, const std::string& what) {
-    for (const char* name : {"torus", "nefertiti", "blobby-3cc", "star-raw", "nefertiti-refine", "tray-bottom",
-                             "bunny-lres", "shark-refine"}) {
-        const Bytes file = fileBytes(std::string(DRM_GOLDEN_DIR) + "/v7/" + name + ".drm");
-        std::vector<drm_test::SectionSpan> sections;
-        ASSERT_TRUE(drm_test::parseSections(file, &sections)) << name;
-        HeaderFields h;
-        ASSERT_TRUE(drm_test::readHeader(drm_test::payloadsOf(file, sections)[kHeader], &h, 7)) << name;
-        ASSERT_EQ(h.startVertices.size(), 3 * h.componentCount) << name;
-        change(h);
-        check(drm_test::withPayload(file, kHeader, drm_test::writeHeader(h, 7)), std::string(name) + " (format 7): " + what);
-    }
-}
-
-TEST(ChecksummedCorruption, Format7ImpossibleStartTrianglesAreRefused) {
-    Verdicts v("impossible start triangles in format 7 headers");
-    struct Change {
-        const char* what;
-        std::function<void(HeaderFields&)> apply;
-    };
-    const Change changes[] = {
-        {"first start triangle (a, a, c)", [](HeaderFields& h) { h.startVertices[1] = h.startVertices[0]; }},
-        {"first start triangle (a, b, a)", [](HeaderFields& h) { h.startVertices[2] = h.startVertices[0]; }},
-        {"a start vertex = the vertex count", [](HeaderFields& h) { h.startVertices[0] = h.vertexCount; }},
-        {"a start vertex = 2^32", [](HeaderFields& h) { h.startVertices[0] = uint64_t(1) << 32; }},
-        {"a start vertex = 2^64 - 1", [](HeaderFields& h) { h.startVertices[0] = UINT64_MAX; }},
-        {"the last start triangle reuses the first one's vertex",
-         [](HeaderFields& h) {
-             if (h.componentCount > 1) h.startVertices[h.startVertices.size() - 1] = h.startVertices[0];
-             else h.startVertices[1] = h.startVertices[0];
-         }},
-        {"the first start triangle twice",
-         [](HeaderFields& h) {
-             ++h.componentCount;
-             h.startVertices.insert(h.startVertices.end(), h.startVertices.begin(), h.startVertices.begin() + 3);
-         }},
-        {"a component count that disagrees with the start triangles", [](HeaderFields& h) { ++h.componentCount; }},
-        {"the last component dropped",
-         [](HeaderFields& h) {
-             --h.componentCount;
-             h.startVertices.resize(h.startVertices.size() - 3);
-         }},
-    };
-    for (const Change& c : changes)
-        forEachFormat7Header(c.apply, [&](const Bytes& b, const std::string& label) { v.refused(b, label, drm::ErrorKind::Corrupt); },
-                             c.what);
-}
-
-TEST(ChecksummedCorruption, Format7ReorderedStartTrianglesAreRefusedOrSound) {
-    // Valid triangles of the mesh, but entered from another edge or turned
-    // over: the ranks then describe another traversal.
-    Verdicts v("format 7 start triangles rotated or flipped");
-    forEachFormat7Header([](HeaderFields& h) { std::swap(h.startVertices[1], h.startVertices[2]); },
-                         [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, "first start flipped");
-// A normal section whose bit width lies outside kMinNormalBits ..
-// kMaxNormalBits (behind a fresh checksum) is refused as corrupt: the
-// octahedral decoder is defined for those widths only.
-TEST(ChecksummedCorruption, NormalBitWidthsOutOfRangeAreRefused) {
-    // A bumpy 12 x 12 grid with its own normals.
-    drm::Mesh mesh;
-    const int side = 12;
-    for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) {
-            const float z = 0.1f * float((x * 7 + y * 3) % 5);
-            mesh.positions.insert(mesh.positions.end(), {float(x), float(y), z});
-            const float n[3] = {0.1f * float(x % 3), 0.1f * float(y % 4), 1.0f};
-            const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-            for (float c : n) mesh.normals.push_back(c / length);
-        }
-    for (int y = 0; y + 1 < side; ++y)
-        for (int x = 0; x + 1 < side; ++x) {
-            const uint32_t v = uint32_t(y * side + x);
-            mesh.triangles.insert(mesh.triangles.end(), {v, v + 1, v + side, v + 1, v + side + 1, v + side});
-        }
-    const Bytes file = drm::encode(mesh).bytes;
-    std::vector<drm_test::SectionSpan> sections;
-    ASSERT_TRUE(drm_test::parseSections(file, &sections));
-    const std::vector<Bytes> payloads = drm_test::payloadsOf(file, sections);
-    size_t normals = payloads.size();
-    for (size_t s = kGeometry + 1; s < payloads.size(); ++s)
-        if (payloads[s].size() > 4 && payloads[s][0] == 2) normals = s;  // semantic 2: normals
-    ASSERT_LT(normals, payloads.size()) << "no normal section";
-    ASSERT_EQ(int(payloads[normals][4]), drm::kDefaultNormalBits);  // the section's bit width
-    EXPECT_NO_THROW(drm::decode(file));
-    Verdicts v("normal bit widths out of range");
-    for (int bits : {0, 1, drm::kMinNormalBits - 1, drm::kMaxNormalBits + 1, 24, 31, 32}) {
-        Bytes payload = payloads[normals];
-        payload[4] = uint8_t(bits);
-        v.refused(drm_test::withPayload(file, normals, payload), "normal bits " + std::to_string(bits),
-                  drm::ErrorKind::Corrupt);
-    }
-}
-
-    forEachFormat7Header(
-        [](HeaderFields& h) { std::rotate(h.startVertices.begin(), h.startVertices.begin() + 1, h.startVertices.begin() + 3); },
-        [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, "first start rotated");
-    forEachFormat7Header(
-        [](HeaderFields& h) {
-            if (h.componentCount > 1)
-                std::swap_ranges(h.startVertices.begin(), h.startVertices.begin() + 3, h.startVertices.end() - 3);
-        },
-        [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, "first and last component swapped");
-}
-
 TEST(ChecksummedCorruption, OutOfRangeHeaderFieldsAreRefused) {
     Verdicts v("header fields out of range");
     struct Change {
@@ -415,6 +302,45 @@ TEST(ChecksummedCorruption, OtherValidHeaderValuesAreRefusedOrSound) {
     for (const Change& c : changes)
         forEachHeader([&](const drm_test::Sample&, HeaderFields& h) { c.apply(h); },
                       [&](const Bytes& b, const std::string& label) { v.refusedOrSound(b, label); }, c.what);
+}
+
+// A normal section whose bit width lies outside kMinNormalBits ..
+// kMaxNormalBits (behind a fresh checksum) is refused as corrupt: the
+// octahedral decoder is defined for those widths only.
+TEST(ChecksummedCorruption, NormalBitWidthsOutOfRangeAreRefused) {
+    // A bumpy 12 x 12 grid with its own normals.
+    drm::Mesh mesh;
+    const int side = 12;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const float z = 0.1f * float((x * 7 + y * 3) % 5);
+            mesh.positions.insert(mesh.positions.end(), {float(x), float(y), z});
+            const float n[3] = {0.1f * float(x % 3), 0.1f * float(y % 4), 1.0f};
+            const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            for (float c : n) mesh.normals.push_back(c / length);
+        }
+    for (int y = 0; y + 1 < side; ++y)
+        for (int x = 0; x + 1 < side; ++x) {
+            const uint32_t v = uint32_t(y * side + x);
+            mesh.triangles.insert(mesh.triangles.end(), {v, v + 1, v + side, v + 1, v + side + 1, v + side});
+        }
+    const Bytes file = drm::encode(mesh).bytes;
+    std::vector<drm_test::SectionSpan> sections;
+    ASSERT_TRUE(drm_test::parseSections(file, &sections));
+    const std::vector<Bytes> payloads = drm_test::payloadsOf(file, sections);
+    size_t normals = payloads.size();
+    for (size_t s = kGeometry + 1; s < payloads.size(); ++s)
+        if (payloads[s].size() > 4 && payloads[s][0] == 2) normals = s;  // semantic 2: normals
+    ASSERT_LT(normals, payloads.size()) << "no normal section";
+    ASSERT_EQ(int(payloads[normals][4]), drm::kDefaultNormalBits);  // the section's bit width
+    EXPECT_NO_THROW(drm::decode(file));
+    Verdicts v("normal bit widths out of range");
+    for (int bits : {0, 1, drm::kMinNormalBits - 1, drm::kMaxNormalBits + 1, 24, 31, 32}) {
+        Bytes payload = payloads[normals];
+        payload[4] = uint8_t(bits);
+        v.refused(drm_test::withPayload(file, normals, payload), "normal bits " + std::to_string(bits),
+                  drm::ErrorKind::Corrupt);
+    }
 }
 
 TEST(ChecksummedCorruption, RawGeometryOfTheWrongSizeIsRefused) {

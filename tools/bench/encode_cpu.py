@@ -14,8 +14,9 @@ binary and their ratio, then the sums of the medians, by size (faces:
 under 4,096, 4,096 to 20,000, 20,000 to 65,536, more) and in all.
 
 CPU time, not wall time: the encoder's second thread overlaps its work,
-and what is compared here is the work. Use farm-bench for wall time
-against a peer. Needs no module beyond Python's own.
+and what is compared here is the work. For wall time against a peer, run
+both in alternation under /usr/bin/time (docs/performance.md). Needs no
+module beyond Python's own.
 """
 import argparse
 import os

@@ -11,7 +11,7 @@ second copy is then coded with models trained on the first, so whatever it
 saves is all that perfect priors could save. Geometry bytes come from
 `drm info`; the tree coder is forced (`--geometry tree`) so that both
 files code vertices the same way. Needs numpy (Debian: python3-numpy).
-Results: docs/geometry-ablation.md, "What learning costs on small meshes".
+Results: docs/tuning.md, "What learning costs small meshes".
 """
 import argparse
 import os

@@ -190,7 +190,7 @@ def scale_section(data_dir):
               f"{fmt(cpu / float(b['wall_s']) if cpu else None, 2)} | {int(b['peak_kb']) / 1024:.0f} | {speed} |")
         w("")
     w("Absolute times move with the codec's own optimization and with the load of this shared 2-core machine; "
-      "regenerate rather than compare with older figures:")
+      "compare figures of one run, as ratios:")
     w("")
     w("```sh")
     w("bash scripts/make-bench-docs.sh --lock /tmp/drm-build.lock        # all of the below, and docs/peers.md")
@@ -263,7 +263,7 @@ def main():
       f"({subprocess.run([args.drm, '--version'], capture_output=True, text=True).stdout.strip()}) on the "
       f"{len(meshes)} meshes of `../shared/meshes`, 12 bits per axis, on this project's 2-core machine. "
       "Connectivity bits per vertex count the rank stream alone, as the paper does (its ~30-byte header "
-      "is left out), or in a file of format 13's topological coder (`connectivity_coder` topological in "
+      "is left out), or in a file of the topological coder (`connectivity_coder` topological in "
       "the data) its symbols; totals are whole files. Times are codec calls only, one run each: the machine is "
       "noisy, so compare ratios within a table, not across runs.")
     w("")
@@ -325,9 +325,9 @@ def main():
       "of the two nearest candidate distances (six buckets from 4096 faces, three below) and, with gap "
       "closing, whether the gap vertex is also the nearest; **angle**, the four nearest candidates "
       "ordered by the angle they subtend over the edge (those behind the edge last), used or not per "
-      "edge by which order won the recent disagreements, with disagreement as a context; **front** "
-      "(format 5), the edge's front neighbours ranked right after rank 1 while the recent apexes say that "
-      "order is cheaper; **boundary** (format 10), whether the edge is a boundary edge coded as a flag of "
+      "edge by which order won the recent disagreements, with disagreement as a context; **front**, "
+      "the edge's front neighbours ranked right after rank 1 while the recent apexes say that "
+      "order is cheaper; **boundary**, whether the edge is a boundary edge coded as a flag of "
       "its own, in contexts of whether the size step found a vertex ahead and how many of the edge's fans "
       "end on a coded boundary (of the paper's models only bunny and nefertiti have borders). Contexts are "
       "seeded from a context-free parent table. Below 4096 faces the default also tries `none` and "
@@ -411,8 +411,8 @@ def main():
     above = [m for m in ["bunny", "fandisk", "horse"]
              if not corpus.get(m) or float(corpus[m]["geometry_bpv"]) >= PAPER_GEOMETRY[m]]
     w(f"Above MMG06: {', '.join(above)}." if above else
-      "All three are below MMG06 since the encoder grows its tree cheapest vertex first (fandisk was 13.26 with the "
-      "minimum spanning tree alone; Draco's geometry, which predicts across the mesh's edges, takes about 11.3 there, "
+      "All three are below MMG06 since the encoder grows its tree cheapest vertex first, not as the minimum spanning "
+      "tree alone (Draco's geometry, which predicts across the mesh's edges, takes about 11.3 on fandisk, "
       "method notes).")
     w("")
     peers = {}
@@ -425,7 +425,7 @@ def main():
       "it, and then codes the k low bits of each vertex predicted across the decoded triangles; the encoder tries "
       "k = 1..5 and keeps the smallest file, the tree's own when no k wins (k = 0 below). Draco cl10's whole file "
       "(`docs/data/peers.csv`, from `drm-peer-bench`, same 12-bit grid) for reference. Bits per vertex; `docs/format.md` "
-      "specifies both coders, `docs/geometry-refine.md` tells how refine came about.")
+      "specifies both coders, `docs/design.md` says why refine ranks the connectivity on the coarse grid.")
     w("")
     w("| mesh | V | default geom | default total | refine geom | refine conn | refine total | k | refine / default | Draco cl10 total | best drm / Draco |")
     w("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")

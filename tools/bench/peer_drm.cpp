@@ -23,7 +23,7 @@ public:
         return std::string("drm ") + drm::version() +
                (paperMethod_ ? ", default options but --levers none --connectivity ranks (the paper's method as published)"
                              : ", default options (all levers, spanning-tree geometry; the distance ranks or, where the file is "
-                               "smaller, format 13's topological coder)") +
+                               "smaller, the topological coder)") +
                "; connectivity = the connectivity section (Stats::connectivityBytes)";
     }
 

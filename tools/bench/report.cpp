@@ -308,8 +308,8 @@ std::string markdownReport(const BenchRun& run) {
         out << "- **" << run.codecs[c] << "**: " << run.descriptions[c] << ".\n";
     out << "\n"
         << "How connectivity is counted. drm: the connectivity section, the rank stream as the paper counts it "
-        << "and, from format 8, the start triangles of the components (the header not included); in a file of "
-        << "format 13's topological coder, its symbols (the positions are in the geometry section). Draco: the real cl10/cl7 file is written by a subclass of "
+        << "and the start triangles of the components (the header not included); in a file of "
+        << "the topological coder, its symbols (the positions are in the geometry section). Draco: the real cl10/cl7 file is written by a subclass of "
         << "`draco::MeshEdgebreakerEncoder` that records the buffer size before and after the connectivity "
         << "stage (`EncodeConnectivity`, a protected virtual of Draco's public headers); the file is checked to be "
         << "byte-identical to `draco::Encoder`'s, and the stage holds the Edgebreaker symbols, split and hole data "

@@ -179,7 +179,7 @@ enum class ConnectivityCoder : uint8_t {
                       // topological coder too unless an option only the ranks have
                       // is set (EncodeOptions::connectivity); the smaller file wins
     Ranks = 1,        // the paper's distance ranks over the vertex set coded first
-    Topological = 2,  // format 13: each triangle's apex named by topology (a new
+    Topological = 2,  // each triangle's apex named by topology (a new
                       // vertex, a fan's far end, or another front vertex by rank),
                       // positions coded in the order the walk meets them; no ranks
 };

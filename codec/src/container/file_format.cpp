@@ -14,25 +14,17 @@
 namespace drm {
 namespace {
 
-// "1", or "1 to 3" once the reader knows several versions.
-std::string versionRange() {
-    if (kOldestReadableFormatVersion == kNewestReadableFormatVersion) return std::to_string(kNewestReadableFormatVersion);
-    return std::to_string(kOldestReadableFormatVersion) + " to " + std::to_string(kNewestReadableFormatVersion);
-}
-
-// From version 2 a section's checksum covers the format version (its two
-// bytes as stored) before the payload: a file whose version field is changed
-// to another readable version then fails its checksums instead of having
-// its sections read in another version's syntax.
-uint32_t sectionChecksum(int version, const uint8_t* payload, size_t size) {
-    if (version < 2) return crc32(payload, size);
-    const uint8_t stored[2] = {uint8_t(version & 0xFF), uint8_t(version >> 8)};
+// A section's checksum covers the format version (its two bytes as
+// stored) before the payload: a file whose version field is changed fails
+// its checksums as well as the version check.
+uint32_t sectionChecksum(const uint8_t* payload, size_t size) {
+    const uint8_t stored[2] = {uint8_t(kFormatVersion & 0xFF), uint8_t(kFormatVersion >> 8)};
     return crc32(payload, size, crc32(stored, 2));
 }
 
 void writeSection(ByteWriter& out, const std::vector<uint8_t>& payload) {
     out.varint(payload.size());
-    out.u32(sectionChecksum(kFormatVersion, payload.data(), payload.size()));
+    out.u32(sectionChecksum(payload.data(), payload.size()));
     out.bytes(payload);
 }
 
@@ -60,15 +52,10 @@ std::vector<uint8_t> encodeHeader(const FileHeader& h) {
     return std::move(out.buffer());
 }
 
-FileHeader decodeHeader(ByteReader& in, int version) {
+FileHeader decodeHeader(ByteReader& in) {
     FileHeader h;
     const uint16_t flags = in.u16("flags");
-    const uint16_t known = version >= kFirstFormatWithTwoParts       ? kKnownFlags
-                           : version >= kFirstFormatWithBoundaryFlag ? kKnownFlagsBefore11
-                           : version >= 9                           ? kKnownFlagsBefore10
-                           : version >= 5                           ? kKnownFlagsBefore9
-                                                                    : kKnownFlagsBefore5;
-    if (flags & ~known) throw Error(ErrorKind::Corrupt, "corrupt file: unknown header flags " + std::to_string(flags));
+    if (flags & ~kKnownFlags) throw Error(ErrorKind::Corrupt, "corrupt file: unknown header flags " + std::to_string(flags));
     h.curvature = (flags & kFlagCurvature) != 0;
     h.levers.topologicalFilter = (flags & kFlagTopologicalFilter) != 0;
     h.levers.gapClosing = (flags & kFlagGapClosing) != 0;
@@ -78,7 +65,7 @@ FileHeader decodeHeader(ByteReader& in, int version) {
     h.levers.boundaryFlag = (flags & kFlagBoundaryFlag) != 0;
     h.keepsVertexOrder = (flags & kFlagVertexOrder) != 0;
     h.hasRepairs = (flags & kFlagRepairs) != 0;
-    h.mortonNumbering = version >= kFirstFormatWithMortonNumbering && !(flags & kFlagSectionNumbering);
+    h.mortonNumbering = !(flags & kFlagSectionNumbering);
     h.twoParts = (flags & kFlagTwoParts) != 0;
     h.grid.bits = in.u8("quantization bits");
     if (h.grid.bits < kMinBits || h.grid.bits > kMaxBits)
@@ -92,9 +79,10 @@ FileHeader decodeHeader(ByteReader& in, int version) {
     const ConnectivityCoderEntry* connectivityCoder = connectivityCoderById(connectivity);
     if (!connectivityCoder)
         throw Error(ErrorKind::Unsupported, "unsupported file: unknown connectivity coder " + std::to_string(connectivity));
-    h.connectivityCoder = ConnectivityCoder(connectivity);
-    if (topological && h.twoParts)
-        throw Error(ErrorKind::Corrupt, "corrupt file: a topological connectivity section in two parts");
+    h.connectivityCoder = connectivityCoder->id;
+    if (h.twoParts && !connectivityCoder->splitsInTwoParts)
+        throw Error(ErrorKind::Corrupt, std::string("corrupt file: a ") + connectivityCoder->name +
+                    " connectivity section in two parts");
     const uint8_t geometry = in.u8("geometry coder");
     if (!geometryCoderById(geometry))
         throw Error(ErrorKind::Unsupported, "unsupported file: unknown geometry coder " + std::to_string(geometry));
@@ -116,17 +104,9 @@ FileHeader decodeHeader(ByteReader& in, int version) {
         h.attributeSections = in.count("attribute section count", kMaxAttributeSections);
         if (h.attributeSections == 0) throw Error(ErrorKind::Corrupt, "corrupt file: the attribute flag is set with no attribute section");
     }
-    if (version >= kFirstFormatWithStartsInConnectivity) {
-        // Nothing is allocated by the count: the decoder checks each
-        // component against the faces it has left.
-        h.componentCount = in.count("component count", h.faceCount);
-    } else {
-        // Every start vertex takes at least one byte: the count is bounded
-        // by what is left before anything is allocated.
-        h.componentCount = in.count("component count", std::min<uint64_t>(h.faceCount, in.remaining() / 3));
-        h.startTriangles.resize(size_t(h.componentCount) * 3);
-        for (uint32_t& v : h.startTriangles) v = uint32_t(in.count("start triangle vertex", h.vertexCount + h.copyCount - 1));
-    }
+    // Nothing is allocated by the count: the decoder checks each component
+    // against the faces it has left.
+    h.componentCount = in.count("component count", h.faceCount);
     if (in.remaining() != 0)
         throw Error(ErrorKind::Corrupt, "corrupt file: " + std::to_string(in.remaining()) + " unexpected bytes at the end of the header");
     const std::string problem = headerProblem(h);
@@ -158,11 +138,6 @@ std::string headerProblem(const FileHeader& h) {
         return std::to_string(h.attributeSections) + " attribute sections (at most " +
                std::to_string(kMaxAttributeSections) + ")";
     if (h.componentCount > h.faceCount) return "more components than faces";
-    if (!h.startTriangles.empty() && h.startTriangles.size() != 3 * h.componentCount)
-        return std::to_string(h.startTriangles.size()) + " start triangle vertices for " +
-               std::to_string(h.componentCount) + " components";
-    for (uint32_t v : h.startTriangles)
-        if (v >= h.vertexCount + h.copyCount) return "a start triangle refers to vertex " + std::to_string(v);
     return "";
 }
 
@@ -210,9 +185,13 @@ FileParts readFile(const uint8_t* data, size_t size) {
     ByteReader file(data, size, "file");
     file.bytes(sizeof kSignature, "signature");
     const uint16_t version = file.u16("format version");
-    if (version < kOldestReadableFormatVersion || version > kNewestReadableFormatVersion)
-        throw Error(ErrorKind::Unsupported, "unsupported .drm format version " + std::to_string(version) + ": this reader knows version " +
-                    versionRange());
+    if (version < kFormatVersion && version > 0)
+        throw Error(ErrorKind::Unsupported, "unsupported .drm format version " + std::to_string(version) +
+                    ": a pre-release format this reader does not read (it reads version " + std::to_string(kFormatVersion) +
+                    "); encode the mesh again");
+    if (version != kFormatVersion)
+        throw Error(ErrorKind::Unsupported, "unsupported .drm format version " + std::to_string(version) +
+                    ": this reader knows version " + std::to_string(kFormatVersion));
 
     // Each section: length, CRC-32, payload. The header comes first, and
     // says whether the optional sections (vertex order, repairs) follow.
@@ -221,7 +200,7 @@ FileParts readFile(const uint8_t* data, size_t size) {
         const uint32_t stored = file.u32((name + " section checksum").c_str());
         const size_t offset = file.offset();
         *payload = file.bytes(*payloadSize, (name + " section").c_str());
-        if (sectionChecksum(version, *payload, *payloadSize) != stored)
+        if (sectionChecksum(*payload, *payloadSize) != stored)
             throw Error(ErrorKind::Corrupt, "corrupt file: the " + name + " section (offset " + std::to_string(offset) +
                         ") fails its checksum");
     };
@@ -231,7 +210,7 @@ FileParts readFile(const uint8_t* data, size_t size) {
     size_t headerSize = 0;
     section("header", &headerPayload, &headerSize);
     ByteReader header(headerPayload, headerSize, "header", size_t(headerPayload - data));
-    parts.header = decodeHeader(header, version);
+    parts.header = decodeHeader(header);
     section("connectivity", &parts.connectivity, &parts.connectivitySize);
     section("geometry", &parts.geometry, &parts.geometrySize);
     if (parts.header.keepsVertexOrder) section("vertex order", &parts.vertexOrder, &parts.vertexOrderSize);

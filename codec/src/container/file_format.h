@@ -13,26 +13,10 @@
 
 namespace drm {
 
-constexpr int kFirstFormatWithStartsInConnectivity = 8;
-// From 9 the connectivity numbers the vertices in Morton order of their
-// grid points (morton_order.h), and the decoder gives them in that order.
-constexpr int kFirstFormatWithMortonNumbering = 9;
-// From 10 a header flag may set the boundary flag lever.
-constexpr int kFirstFormatWithBoundaryFlag = 10;
-// From 11 a header flag may split the connectivity into two parts
-// (connectivity_parts.h).
-constexpr int kFirstFormatWithTwoParts = 11;
-// From 12 the size step of an edge on a part's seam side searches its
-// first ball only (ApexPredictor::searchFirstBallOnlyOn, seam_side.h).
-constexpr int kFirstFormatWithSeamFirstBall = 12;
-
 constexpr uint8_t kSignature[8] = {0x89, 'D', 'R', 'M', '\r', '\n', 0x1A, '\n'};
-constexpr uint16_t kFormatVersion = kFileFormatVersion;  // written; read: drm.h's readable range
-
-// From 13 the connectivity coder may be ConnectivityCoder::Topological: the
-// connectivity and geometry sections then hold topological_coder.h's two
-// streams.
-constexpr int kFirstFormatWithTopologicalCoder = 13;
+// The one version written and read. Files of earlier (pre-release)
+// versions are refused with a message naming their version.
+constexpr uint16_t kFormatVersion = kFileFormatVersion;
 
 constexpr uint16_t kFlagCurvature = 1;
 constexpr uint16_t kFlagTopologicalFilter = 2;
@@ -42,18 +26,13 @@ constexpr uint16_t kFlagAngleOrder = 16;
 constexpr uint16_t kFlagVertexOrder = 32;  // a fourth section holds the input vertex order
 constexpr uint16_t kFlagRepairs = 64;      // a repairs section undoes a manifold cut (repair_section.h)
 constexpr uint16_t kFlagAttributes = 128;  // attribute sections follow (attribute_sections.h)
-constexpr uint16_t kFlagFrontNeighbours = 256;  // format 5 on
-// Format 9 on: the connectivity numbers the vertices in the vertex
-// section's order, as formats 1 to 8 did, instead of Morton order.
+constexpr uint16_t kFlagFrontNeighbours = 256;
+// The connectivity numbers the vertices in the vertex section's order
+// instead of Morton order (morton_order.h).
 constexpr uint16_t kFlagSectionNumbering = 512;
-// Format 10 on: the boundary flag lever (Levers::boundaryFlag).
-constexpr uint16_t kFlagBoundaryFlag = 1024;
-// Format 11 on: the connectivity section holds two parts, decodable apart.
+constexpr uint16_t kFlagBoundaryFlag = 1024;  // the boundary flag lever (Levers::boundaryFlag)
+// The connectivity section holds two parts, decodable apart (connectivity_parts.h).
 constexpr uint16_t kFlagTwoParts = 2048;
-constexpr uint16_t kKnownFlagsBefore5 = 255;
-constexpr uint16_t kKnownFlagsBefore9 = 511;
-constexpr uint16_t kKnownFlagsBefore10 = 1023;
-constexpr uint16_t kKnownFlagsBefore11 = 2047;
 constexpr uint16_t kKnownFlags = 4095;
 constexpr uint64_t kMaxAttributeSections = 32;
 
@@ -83,11 +62,10 @@ struct FileHeader {
     // Edge-connected components the traversal codes (their start triangles
     // are in the connectivity section, start_triangle.h).
     uint64_t componentCount = 0;
-    std::vector<uint32_t> startTriangles;
 };
 
 struct FileParts {
-    int formatVersion = 0;  // as read, within drm.h's readable range
+    int formatVersion = 0;  // as read: kFormatVersion
     FileHeader header;
     const uint8_t* connectivity = nullptr;
     size_t connectivitySize = 0;

@@ -59,7 +59,7 @@ struct Decoding {
     std::unique_ptr<RepairReader> repairs;
     size_t looseCount = 0, duplicateCount = 0;
     size_t traversalFaces = 0, traversalVertices = 0;
-    uint64_t boundaryEdges = 0;  // format 13's topological coder: the boundary symbols
+    uint64_t boundaryEdges = 0;  // the topological coder's boundary symbols
 
     const std::vector<uint32_t>& copyOf() const {
         static const std::vector<uint32_t> none;
@@ -68,8 +68,7 @@ struct Decoding {
 };
 
 void decodeVertices(Decoding& d) {
-    d.vertices = d.geometryCoder.decode(d.parts.geometry, d.parts.geometrySize, d.header.vertexCount, d.header.grid.bits,
-                                              d.parts.formatVersion);
+    d.vertices = d.geometryCoder.decode(d.parts.geometry, d.parts.geometrySize, d.header.vertexCount, d.header.grid.bits);
     d.result.quantized = std::move(d.vertices.grid);
     d.vertexCount = size_t(d.header.vertexCount);
     if (d.header.mortonNumbering) {
@@ -137,7 +136,6 @@ struct RankStream {
     const std::vector<int32_t>* grid = nullptr;  // the stream's vertices: x, y, z each
     size_t faceCount = 0;
     uint64_t componentCount = 0;
-    const uint32_t* startTriangles = nullptr;  // formats 1 to 7: the header's
     uint32_t seam = kNoIndex;                  // the first of two parts: where the second's vertices begin
     const std::vector<uint32_t>* kept = nullptr;  // the second part: its vertices never culled
 };
@@ -166,7 +164,7 @@ RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOpt
     const std::unique_ptr<SpatialIndex> candidates = makeSpatialIndex(grid, options.index, IndexRole::Traversal);
     Traversal traversal(vertexCount, expectedFaces, candidates.get());
     EdgeModel model(grid, header.grid.bits - d.vertices.lowBits, header.predictor, header.curvature, header.levers,
-                    faceCount, *candidates, traversal, d.parts.formatVersion);
+                    faceCount, *candidates, traversal);
     if (s.seam != kNoIndex) {
         model.setSeam(s.seam);
         for (size_t v = s.seam; v < vertexCount; ++v) traversal.keepVertex(uint32_t(v));
@@ -178,8 +176,7 @@ RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOpt
     RankDecoder coder(s.data, s.size, model.contextCount(), model.boundaryFlags());
     std::vector<uint64_t>& histogram = out.histogram;
 
-    const bool startsInStream = d.parts.formatVersion >= kFirstFormatWithStartsInConnectivity;
-    StartCursor cursor(traversal);  // formats 8 on; costs nothing until a component starts
+    StartCursor cursor(traversal);  // costs nothing until a component starts
     const uint64_t n = vertexCount;
     uint32_t lastStart = 0;
     for (size_t c = 0; c < s.componentCount; ++c) {
@@ -187,24 +184,20 @@ RebuiltFaces decodeRanks(const Decoding& d, const RankStream& s, const DecodeOpt
             throw Error(ErrorKind::Corrupt, "corrupt file: more components than the header's " + std::to_string(faceCount) + " faces");
         try {
             uint32_t start[3];
-            if (startsInStream) {
-                const uint32_t from = cursor.at(lastStart);
-                if (from >= n) throw Error(ErrorKind::Corrupt, "every vertex is taken before it starts");
-                const uint32_t skipped = coder.getStartGap(StartField::Skipped);
-                const uint32_t second = coder.getStartGap(StartField::Second);
-                const uint32_t third = coder.getStartGap(StartField::Third);
-                if (coder.bytesPastEnd() > 0)
-                    throw Error(ErrorKind::Corrupt, "the connectivity section ends before its start triangle");
-                if (skipped >= n)
-                    throw Error(ErrorKind::Corrupt, "its start vertex lies " + std::to_string(skipped) + " vertices on, of " +
-                                std::to_string(n));
-                start[0] = uint32_t((from + uint64_t(skipped)) % n);
-                start[1] = vertexAtGap(start[0], second, n);
-                start[2] = vertexAtGap(start[0], third, n);
-                lastStart = start[0];
-            } else {
-                std::copy_n(&s.startTriangles[3 * c], 3, start);
-            }
+            const uint32_t from = cursor.at(lastStart);
+            if (from >= n) throw Error(ErrorKind::Corrupt, "every vertex is taken before it starts");
+            const uint32_t skipped = coder.getStartGap(StartField::Skipped);
+            const uint32_t second = coder.getStartGap(StartField::Second);
+            const uint32_t third = coder.getStartGap(StartField::Third);
+            if (coder.bytesPastEnd() > 0)
+                throw Error(ErrorKind::Corrupt, "the connectivity section ends before its start triangle");
+            if (skipped >= n)
+                throw Error(ErrorKind::Corrupt, "its start vertex lies " + std::to_string(skipped) + " vertices on, of " +
+                            std::to_string(n));
+            start[0] = uint32_t((from + uint64_t(skipped)) % n);
+            start[1] = vertexAtGap(start[0], second, n);
+            start[2] = vertexAtGap(start[0], third, n);
+            lastStart = start[0];
             // Every face of part 1 has a vertex below the seam (its ranks
             // see to it for the others): so no face is in both parts.
             if (s.seam != kNoIndex && std::min({start[0], start[1], start[2]}) >= s.seam)
@@ -271,7 +264,6 @@ void decodeConnectivity(Decoding& d, const DecodeOptions& options, ProgressRepor
     whole.grid = &result.quantized;
     whole.faceCount = d.traversalFaces;
     whole.componentCount = header.componentCount;
-    whole.startTriangles = header.startTriangles.data();
     if (!header.twoParts) {
         RebuiltFaces faces = decodeRanks(d, whole, options, &progress);
         result.mesh.triangles = std::move(faces.triangles);
@@ -365,6 +357,14 @@ void dequantizeVertices(Decoding& d) {
 }
 
 void fillStats(Decoding& d, size_t fileSize) {
+    Stats& stats = d.result.stats;
+    static const Repairs noRepairs;
+    fillStatsFromHeader(stats, d.parts, fileSize);  // leaves the decoded figures (ranks, repairs, attributes) alone
+    fillStatsFromTraversal(stats, d.vertices.lowBits, d.repairs ? d.repairs->repairs() : noRepairs);
+    if (d.header.connectivityCoder == ConnectivityCoder::Topological) stats.boundaryEdges = d.boundaryEdges;
+    stats.vertices = d.result.mesh.vertexCount();  // the file's vertices, or the split ones of a welded mesh
+}
+
 // The vertex set coded first, then the ranks that rebuild the faces over
 // it (connectivity coder 1).
 void decodeByRanks(Decoding& d, const DecodeOptions& options, ProgressReporter& progress) {
@@ -401,14 +401,6 @@ const ConnectivityStage& connectivityStageOf(ConnectivityCoder id) {
         if (stage.id == id) return stage;
     // readFile refuses ids connectivity_coders.h lacks, and each of those has a stage.
     throw Error(ErrorKind::Internal, "internal error: no decoder for connectivity coder " + std::to_string(int(id)));
-}
-
-    Stats& stats = d.result.stats;
-    static const Repairs noRepairs;
-    fillStatsFromHeader(stats, d.parts, fileSize);  // leaves the decoded figures (ranks, repairs, attributes) alone
-    fillStatsFromTraversal(stats, d.vertices.lowBits, d.repairs ? d.repairs->repairs() : noRepairs);
-    if (d.header.connectivityCoder == ConnectivityCoder::Topological) stats.boundaryEdges = d.boundaryEdges;
-    stats.vertices = d.result.mesh.vertexCount();  // the file's vertices, or the split ones of a welded mesh
 }
 
 }  // namespace

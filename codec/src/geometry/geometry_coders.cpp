@@ -14,7 +14,7 @@ GeometryEncoding encodeRaw(const std::vector<int32_t>& grid, int bits, Neighbour
     for (size_t v = 0; v < out.order.size(); ++v) out.order[v] = uint32_t(v);
     return out;
 }
-VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int) {
+VertexSet decodeRaw(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
     VertexSet out;
     out.grid = unpackGrid(data, size, vertexCount, bits);
     return out;
@@ -26,7 +26,7 @@ GeometryEncoding encodeSorted(const std::vector<int32_t>& grid, int bits, Neighb
     out.bytes = encodeSortedPoints(grid, bits, out.order);
     return out;
 }
-VertexSet decodeSorted(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int) {
+VertexSet decodeSorted(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
     VertexSet out;
     out.grid = decodeSortedPoints(data, size, vertexCount, bits);
     return out;
@@ -73,19 +73,19 @@ GeometryEncoding encodeRefineCoarse(const std::vector<int32_t>& grid, int bits, 
     return encodeGeometryTree(grid, bits, index, GeometryTree::Smaller, ChoiceCoding::Smaller, FrameUse::On, trials,
                               threads, treeNeighboursFor(grid.size() / 3));
 }
-VertexSet decodeTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
+VertexSet decodeTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
     VertexSet out;
-    out.grid = decodeGeometryTree(data, size, vertexCount, bits, formatVersion);
+    out.grid = decodeGeometryTree(data, size, vertexCount, bits);
     return out;
 }
 
 // Refine: the coarse grid by the spanning tree inside the refine payload,
 // the low bits after the connectivity (refine_coder.h).
-VertexSet decodeRefineCoarse(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
+VertexSet decodeRefineCoarse(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
     VertexSet out;
     out.refinement = readRefinePayload(data, size, bits);
     out.lowBits = out.refinement.lowBits;
-    out.grid = decodeGeometryTree(out.refinement.tree, out.refinement.treeSize, vertexCount, bits - out.lowBits, formatVersion);
+    out.grid = decodeGeometryTree(out.refinement.tree, out.refinement.treeSize, vertexCount, bits - out.lowBits);
     return out;
 }
 int refineBitsOfRefine(const uint8_t* data, size_t size, int bits) {

@@ -44,7 +44,7 @@ struct GeometryCoderEntry {
 
     // Decoder, first pass, in the syntax of the file's format version;
     // throws Error (Corrupt) on a malformed section.
-    VertexSet (*decode)(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion);
+    VertexSet (*decode)(const uint8_t* data, size_t size, uint64_t vertexCount, int bits);
     // The low bits coded after the connectivity, read from the section
     // without decoding it (inspect); 0 for a coder with one pass.
     int (*refineBits)(const uint8_t* data, size_t size, int bits);

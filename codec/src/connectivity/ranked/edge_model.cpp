@@ -105,18 +105,16 @@ static_assert(kSeamBoundaryClass + 3 == kBoundaryClasses, "three seam classes");
 
 EdgeModel::EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature,
                      const Levers& levers, uint64_t faceCount, const SpatialIndex& candidates,
-                     const Traversal& traversal, int formatVersion)
+                     const Traversal& traversal)
     : grid_(grid),
       bits_(bits),
       levers_(levers),
       fineBuckets_(faceCount >= kFineBucketsFromFaces),
-      ballCandidates_(formatVersion >= 4),
       admissible_(traversal, levers.topologicalFilter),
       predictor_(predictor, curvature, grid, candidates, admissible_),
       ranks_(grid, candidates, admissible_),
-      frontLever_(formatVersion >= 5 && levers.frontNeighbours),
-      boundaryLever_(formatVersion >= kFirstFormatWithBoundaryFlag && levers.boundaryFlag),
-      seamFirstBall_(formatVersion >= kFirstFormatWithSeamFirstBall) {
+      frontLever_(levers.frontNeighbours),
+      boundaryLever_(levers.boundaryFlag) {
     seamSide_.bits = bits;
 }
 
@@ -288,7 +286,7 @@ void EdgeModel::learnOrder(uint32_t apex, const OpenEdge& edge) {
 }
 
 const std::vector<RankedVertex>& EdgeModel::nearestCandidates(const FixedPoint& p, size_t count, const OpenEdge& edge) {
-    if (ballCandidates_ && predictor_.searchedBall())
+    if (predictor_.searchedBall())
         return ranks_.nearestAmong(p, count, edge,
                                    [&](auto offer, auto bound) { predictor_.forEachInBall(p, bound, offer); });
     return ranks_.nearest(p, count, edge);

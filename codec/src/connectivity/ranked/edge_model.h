@@ -19,9 +19,9 @@ class SpatialIndex;
 
 struct EdgeForecast {
     FixedPoint prediction;
-    uint32_t preferred = kNoVertex;  // gap-closing vertex, rank 1 when present (format 5 with the front lever: listed first in `nearest` instead)
+    uint32_t preferred = kNoVertex;  // gap-closing vertex, rank 1 when present (with the front lever: listed first in `nearest` instead)
     int context = 0;                     // coder context, < EdgeModel::contextCount()
-    int boundaryClass = -1;              // the boundary flag's context (format 10), or -1 without the lever
+    int boundaryClass = -1;              // the boundary flag's context, or -1 without the lever
     std::vector<RankedVertex> nearest;   // the listed candidates, in rank order (confidence / angle / front levers)
 };
 
@@ -30,8 +30,7 @@ public:
     // faceCount sets how finely the coder contexts split (small meshes
     // cannot teach many contexts).
     EdgeModel(const std::vector<int32_t>& grid, int bits, Predictor predictor, bool curvature, const Levers& levers,
-              uint64_t faceCount, const SpatialIndex& candidates, const Traversal& traversal,
-              int formatVersion = kFileFormatVersion);
+              uint64_t faceCount, const SpatialIndex& candidates, const Traversal& traversal);
     // The predictor points at this model's seam side: not copied.
     EdgeModel(const EdgeModel&) = delete;
     EdgeModel& operator=(const EdgeModel&) = delete;
@@ -65,7 +64,7 @@ public:
     void setSeam(uint32_t first) {
         admissible_.setSeam(first);
         seamSide_.seam = first;
-        if (seamFirstBall_) predictor_.searchFirstBallOnlyOn(&seamSide_);
+        predictor_.searchFirstBallOnlyOn(&seamSide_);
     }
     // Two parts: this model ranks the second part, whose first vertex has
     // Morton key `key`: an edge whose prediction lies at a grid point of
@@ -75,7 +74,7 @@ public:
     void setFirstPartBelowKey(uint64_t key) {
         seamSide_.firstPartBelow = key;
         seamSide_.secondPart = true;
-        if (seamFirstBall_) predictor_.searchFirstBallOnlyOn(&seamSide_);
+        predictor_.searchFirstBallOnlyOn(&seamSide_);
     }
     // Tells the model the apex of the last forecast edge, once known, so it
     // can learn which candidate order serves this mesh. After rankOf or
@@ -110,7 +109,6 @@ private:
     int bits_;
     Levers levers_;
     bool fineBuckets_;
-    bool ballCandidates_;
     Admissibility admissible_;
     ApexPredictor predictor_;
     RankSearch ranks_;
@@ -130,7 +128,6 @@ private:
     // The two connectivity parts: the seam's side, for the boundary flag's
     // class and the size step; the predictor points at it.
     SeamSide seamSide_;
-    bool seamFirstBall_;  // format 12: the size step stops at the first ball on the seam's side
     // The forecast's list (nearest) holds the order used: the plain one,
     // or the front order (its first, extra_, the rest); otherOrder_ then
     // holds the plain one.

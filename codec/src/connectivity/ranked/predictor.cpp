@@ -127,7 +127,7 @@ Vec3 ApexPredictor::scaleToFirstVertexAhead(Vec3 p, Vec3 a, Vec3 b, const OpenEd
             return mid + (p - mid) * (found.height / height);
         }
         if (attempt == 0 && firstBallOnly_ && firstBallOnly_->contains(edge, snapPrediction(p, firstBallOnly_->bits)))
-            return p;  // format 12
+            return p;  // the seam's side: the first ball only
     }
     return p;
 }

@@ -107,11 +107,11 @@ GrownTree cheapestFirstTree(const std::vector<int32_t>& grid, int bits, const Ne
     // Per vertex, where its undecoded neighbours begin: a vertex decoded
     // stays decoded, so the cursor only moves on.
     std::vector<uint32_t> cursor(graph.offset.begin(), graph.offset.end() - 1);  // offset has n + 1 entries
-    CodingState s(cellBits, kFileFormatVersion, flagChoices, frame);
+    CodingState s(cellBits, flagChoices, frame);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
-    if (s.signContexts) s.signs.reserve(3 * n);
+    s.signs.reserve(3 * n);
     s.childCountOf.reserve(n);
     s.cells.reserve(n);  // grown by doubling, it held up to three times this while it moved
     LogWriter io{log};
@@ -181,7 +181,7 @@ GrownTree cheapestFirstTree(const std::vector<int32_t>& grid, int bits, const Ne
 void writeTreeHeader(RangeEncoder& coder, int cellBits, bool flagChoices, bool frame) {
     coder.encodeBits(uint32_t(cellBits), kCellBitsWidth);
     coder.encodeBits(flagChoices ? 1 : 0, 1);
-    coder.encodeBits(frame ? 1 : 0, 1);  // G, from format 3
+    coder.encodeBits(frame ? 1 : 0, 1);  // G
 }
 
 // The section of a tree cheapestFirstTree grew: each vertex's unit of its
@@ -193,7 +193,7 @@ std::vector<uint8_t> writeGrownTree(const CodingLog& log, int cellBits, const st
     RangeEncoder coder;
     Writer io{coder};
     writeTreeHeader(coder, cellBits, flagChoices, frame);
-    CodingState s(cellBits, kFileFormatVersion, flagChoices, frame);  // for the child counts' models
+    CodingState s(cellBits, flagChoices, frame);  // for the child counts' models
     s.parentOf.reserve(order.size());
     s.childCountOf.reserve(order.size());
     TreeWalk walk;
@@ -251,11 +251,11 @@ std::vector<uint8_t> codeTree(const std::vector<int32_t>& grid, int bits, int ce
     RangeEncoder coder;
     Writer io{coder};
     writeTreeHeader(coder, cellBits, flagChoices, frame);
-    CodingState s(cellBits, kFileFormatVersion, flagChoices, frame);
+    CodingState s(cellBits, flagChoices, frame);
     s.pos.reserve(n);
     s.parentOf.reserve(n);
     s.magnitude.reserve(3 * n);
-    if (s.signContexts) s.signs.reserve(3 * n);
+    s.signs.reserve(3 * n);
     s.childCountOf.reserve(n);
     s.cells.reserve(n);  // grown by doubling, it held up to three times this while it moved
     TreeWalk walk;

@@ -21,7 +21,7 @@ namespace drm {
 struct GeometryEncoding {
     std::vector<uint8_t> bytes;
     std::vector<uint32_t> order;  // order[i] = input index of decoded vertex i
-    uint64_t framedResiduals = 0; // residuals coded in the parent's local frame (format 3)
+    uint64_t framedResiduals = 0; // residuals coded in the parent's local frame (bit G)
 };
 
 // Which tree the encoder builds: by default both, keeping the smaller
@@ -144,12 +144,10 @@ GeometryEncoding encodeGeometryTree(const std::vector<int32_t>& grid, int bits,
                                     GeometryTreeTrials* trials = nullptr, int threads = 1,
                                     TreeNeighbours treeNeighbours = TreeNeighbours::Four);
 
-// Reads a section in the syntax of format version formatVersion (1 to
-// kFileFormatVersion; the section changed in versions 2, 3, 6 and 7:
-// docs/format.md; the encoder writes kFileFormatVersion's). Throws Error on data that does
-// not decode to exactly vertexCount vertices on the grid.
-std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits,
-                                        int formatVersion);
+// Reads a section (docs/format.md, "Geometry payload, coder 2: spanning
+// tree"). Throws Error on data that does not decode to exactly vertexCount
+// vertices on the grid.
+std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits);
 
 }  // namespace drm
 

@@ -23,7 +23,7 @@ namespace tree_coding {
 inline void magnitudeContexts(const CodingState& s, const Predictions& p, uint32_t self, uint32_t parent,
                        int (*contexts)[3]) {
     for (int a = 0; a < 3; ++a) contexts[0][a] = contexts[1][a] = magnitudeContext(s, self, parent, a);
-    if (!s.spacingContexts || p.spacing2 == 0) return;
+    if (p.spacing2 == 0) return;
     const int length = bitLength(uint64_t(p.spacing2));
     const auto clamped = [](int c) { return std::max(0, std::min(c, kMagnitudeContexts - 1)); };
     contexts[0][0] = contexts[0][1] = clamped(length - 2);
@@ -69,8 +69,8 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
     if (Io::kEncoding && inFrame) r = toFrame(p.frame, r);
     int64_t out[3];
     const int32_t in[3] = {r.x, r.y, r.z};
-    const int group = residualGroup(s.version2, choice);
-    const bool tangentContexts = inFrame && s.tangentSigns;  // format 7
+    const int group = residualGroup(choice);
+    const bool tangentContexts = inFrame && s.tangentSigns;  // the tangent sign models
     const NearPointSides sides = tangentContexts ? nearPointSides(p) : NearPointSides();
     for (int a = 0; a < 3; ++a) {
         const auto signModel = [&](int length) -> BitModel& {
@@ -79,7 +79,7 @@ GridPoint codeChild(Io& io, CodingState& s, uint32_t self, uint32_t parent, cons
             return s.axis[group][a].sign[signContext(s, self, parent, a)];
         };
         const int32_t coded = codeResidual(io, s.axis[group][a], contexts[group][a], signModel, in[a]);
-        if (s.signContexts) s.signs[3 * size_t(self) + size_t(a)] = signOf(coded);
+        s.signs[3 * size_t(self) + size_t(a)] = signOf(coded);
         ++s.residualsCoded[group][a][contexts[group][a]];
         s.magnitude[3 * size_t(self) + size_t(a)] = magnitudeOf(coded);
         out[a] = coded;

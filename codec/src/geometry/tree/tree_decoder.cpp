@@ -15,7 +15,7 @@ namespace drm {
 
 using namespace tree_coding;
 
-std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits, int formatVersion) {
+std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64_t vertexCount, int bits) {
     // Every vertex but a root codes at least four adaptive decisions (three
     // residual zero flags and a child count; a predictor choice too, unless
     // every candidate repeats the parent). No binary model gives a decision
@@ -32,13 +32,13 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     RangeDecoder coder(data, size);
     Reader io{coder};
     const int cellBits = int(coder.decodeBits(kCellBitsWidth));
-    const bool flagChoices = formatVersion >= 2 && coder.decodeBits(1) == 1;
-    const bool frame = formatVersion >= 3 && coder.decodeBits(1) == 1;
+    const bool flagChoices = coder.decodeBits(1) == 1;
+    const bool frame = coder.decodeBits(1) == 1;
     if (cellBits > bits) throw Error(ErrorKind::Corrupt, "corrupt file: the geometry section's cell size is larger than the grid");
     // The count is only a claim until the stream delivers the vertices:
     // tables grow as they are decoded, so a short or garbage section fails
     // before memory is committed to it.
-    CodingState s(cellBits, formatVersion, flagChoices, frame);
+    CodingState s(cellBits, flagChoices, frame);
     // Room for as many vertices as the section holds at four bits each (the
     // corpus takes 5.8 to 33 bits), up to 4M: tables sized once are not
     // copied as they grow, and touch half the pages. A corrupt count can so
@@ -49,7 +49,7 @@ std::vector<int32_t> decodeGeometryTree(const uint8_t* data, size_t size, uint64
     s.pos.reserve(initial);
     s.parentOf.reserve(initial);
     s.magnitude.reserve(3 * initial);
-    if (s.signContexts) s.signs.reserve(3 * initial);
+    s.signs.reserve(3 * initial);
     s.childCountOf.reserve(initial);
     s.cells.reserve(initial);
     TreeWalk walk;

@@ -24,7 +24,7 @@
 namespace drm {
 namespace tree_coding {
 
-constexpr int kChoiceContexts = 4;  // the one-symbol choice's tables (format 1, and 2 with F = 0): by the previous choice, clamped
+constexpr int kChoiceContexts = 4;  // the one-symbol choice's tables (the section's bit F = 0): by the previous choice, clamped
 constexpr uint32_t kDirectChildCounts = 8;  // 0..7, then an escape
 constexpr int kCellBitsWidth = 5;  // bits of the section header's cell size field
 
@@ -164,7 +164,7 @@ constexpr int kResidualGroups = 2;
 enum Sign : uint8_t { kNoSign = 0, kPositive = 1, kNegative = 2 };
 inline uint8_t signOf(int32_t r) { return r > 0 ? kPositive : r < 0 ? kNegative : kNoSign; }
 
-inline int residualGroup(bool version2, uint32_t choice) { return version2 && choice != 0 ? 1 : 0; }
+inline int residualGroup(uint32_t choice) { return choice != 0 ? 1 : 0; }
 
 // A child count is coded in a context of the parent's own child count (1,
 // 2, 3 or more: a parent has at least one; roots apart).
@@ -176,22 +176,19 @@ constexpr int kTangentSignContexts = 27;
 
 // Everything both sides track while walking the tree.
 struct CodingState {
-    bool version2;                     // format 2's residual models and child-count contexts (else format 1's)
-    bool spacingContexts;              // format 3: the residual from the parent in contexts of the spacing
-    bool signContexts;                 // format 6: signs in contexts of the parent's and the previous axis'
-    bool framedParent;                 // format 3 with the section's bit G: ... and in its local frame
-    bool tangentSigns;                 // format 7: that frame turned along the walk, its tangent signs by where near points lie
-    bool choiceFlags;                  // the choice as flags (format 2, F = 1), else one symbol
+    bool framedParent;                 // the section's bit G: the residual from the parent may be coded in its local frame
+    bool tangentSigns;                 // with G: that frame turned along the walk, its tangent signs by where near points lie
+    bool choiceFlags;                  // the choice as flags (the section's bit F = 1), else one symbol
     std::vector<GridPoint> pos;        // decoded positions
     std::vector<uint32_t> parentOf;    // decoded parent, kNoVertex for roots
     std::vector<uint32_t> magnitude;   // |residual| per axis, 3 per vertex
-    std::vector<uint8_t> signs;        // format 6: the residual's Sign per axis, 3 per vertex
+    std::vector<uint8_t> signs;        // the residual's Sign per axis, 3 per vertex
     std::vector<uint8_t> childCountOf; // decoded child-count symbols (8: escaped)
     DecodedCells cells;
     AxisModels axis[kResidualGroups][3];  // [residual group][axis]
     std::vector<AdaptiveFrequencies> predictorChoice;                // one symbol: [previous choice, clamped]
     BitModel isChoice[kMaxCandidates][kDistanceBuckets][2][2];       // flags: [candidate][distance][was previous][crowded]
-    BitModel tangentSign[2][kTangentSignContexts];                   // format 7: [tangent axis][context]
+    BitModel tangentSign[2][kTangentSignContexts];                   // [tangent axis][context]
     std::vector<AdaptiveFrequencies> childCount;                     // [context]
     uint32_t previousChoice = 0;
     // Whether the local frame has lately coded edges from the parent in
@@ -233,13 +230,10 @@ struct CodingState {
         return kept.costs;
     }
 
-    CodingState(int cellBits, int formatVersion, bool flagChoices, bool frameAllowed)
-        : version2(formatVersion >= 2),
-          spacingContexts(formatVersion >= 3),
-          signContexts(formatVersion >= 6),
-          framedParent(formatVersion >= 3 && frameAllowed),
-          tangentSigns(formatVersion >= 7 && frameAllowed),
-          choiceFlags(formatVersion >= 2 && flagChoices),
+    CodingState(int cellBits, bool flagChoices, bool frameAllowed)
+        : framedParent(frameAllowed),
+          tangentSigns(frameAllowed),
+          choiceFlags(flagChoices),
           cells(cellBits),
           predictorChoice(kChoiceContexts, AdaptiveFrequencies(std::vector<uint16_t>(kMaxCandidates, 1))),
           childCount(kChildCountContexts, AdaptiveFrequencies(std::vector<uint16_t>(kDirectChildCounts + 1, 1))) {
@@ -250,9 +244,8 @@ struct CodingState {
             for (auto& byDistance : byCandidate)
                 for (auto& byPrevious : byDistance)
                     for (BitModel& m : byPrevious) m = BitModel::agile(65536 / 8);
-        if (version2)
-            for (auto& group : axis)
-                for (AxisModels& a : group) a.makeAgile();
+        for (auto& group : axis)
+            for (AxisModels& a : group) a.makeAgile();
         for (auto& byAxis : tangentSign)
             for (BitModel& m : byAxis) m = BitModel::agile();
     }
@@ -262,14 +255,13 @@ struct CodingState {
     void begin(uint32_t parent) {
         parentOf.push_back(parent);
         magnitude.insert(magnitude.end(), 3, 0);
-        if (signContexts) signs.insert(signs.end(), 3, kNoSign);
+        signs.insert(signs.end(), 3, kNoSign);
     }
     void place(uint32_t self, GridPoint at) {
         pos.push_back(at);
         cells.insert(self, at);
     }
     AdaptiveFrequencies& childCountModel(uint32_t self) {
-        if (!version2) return childCount[0];
         const uint32_t parent = parentOf[self];
         if (parent == kNoVertex) return childCount[kChildCountContexts - 1];
         const uint8_t ofParent = childCountOf[parent];  // at least 1: it announced this child
@@ -284,7 +276,6 @@ struct CodingState {
 // parent's sign on the axis and this vertex's on the axis before name one of
 // nine models (the corpus's files 0.7 % smaller in geometric mean).
 inline int signContext(const CodingState& s, uint32_t self, uint32_t parent, int axis) {
-    if (!s.signContexts) return 0;
     const int ofParent = s.signs[3 * size_t(parent) + size_t(axis)];
     const int before = axis > 0 ? int(s.signs[3 * size_t(self) + size_t(axis - 1)]) : int(kNoSign);
     return 3 * ofParent + before;
@@ -394,7 +385,7 @@ inline Predictions predict(const CodingState& s, uint32_t self, uint32_t parent)
         for (int j = 0; j < m; ++j)
             if (i != j) p.add(at + (near[i] - near[j]));
     p.pad();
-    if (s.choiceFlags || s.spacingContexts) p.spacing2 = m > 0 ? nearD2[m - 1] : 0;
+    p.spacing2 = m > 0 ? nearD2[m - 1] : 0;
     if (s.choiceFlags || s.tangentSigns)
         for (int i = 0; i <= kNearest; ++i) {
             const GridPoint k = i > 0 && i <= m ? near[i - 1] : at;

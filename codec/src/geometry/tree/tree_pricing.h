@@ -26,10 +26,10 @@ typedef float Floats __attribute__((vector_size(16)));
 class Pricing {
 public:
     Pricing(CodingState& s, const Predictions& p, const int (*contexts)[3])
-        : s_(s), p_(p), version2_(s.version2), frameNow_(s.frameNow()), flags_(s.choiceFlags) {
+        : s_(s), p_(p), frameNow_(s.frameNow()), flags_(s.choiceFlags) {
         for (int g = 0; g < kResidualGroups; ++g)
             for (int a = 0; a < 3; ++a) axis_[g][a] = &s.residualCosts(g, a, contexts[g][a]);
-        others_ = axis_[residualGroup(version2_, 1)];
+        others_ = axis_[residualGroup(1)];
         if (!flags_) {
             symbols_ = &s.predictorChoice[std::min<uint32_t>(s.previousChoice, kChoiceContexts - 1)];
             symbolTotal_ = symbols_->totalCount();
@@ -37,7 +37,7 @@ public:
     }
     double residual(GridPoint r, uint32_t c) const {
         const bool inFrame = framed(frameNow_, c);
-        const ResidualCosts* const* a = axis_[residualGroup(version2_, c)];
+        const ResidualCosts* const* a = axis_[residualGroup(c)];
         if (inFrame) r = toFrame(p_.frame, r);
         return (*a[0])(r.x) + (*a[1])(r.y) + (*a[2])(r.z);
     }
@@ -120,7 +120,6 @@ private:
     const Predictions& p_;
     const ResidualCosts* axis_[kResidualGroups][3];
     const ResidualCosts* const* others_;  // the models of candidates 1 and on
-    bool version2_;
     bool frameNow_;
     bool flags_;
     const AdaptiveFrequencies* symbols_ = nullptr;  // one symbol: its table
