@@ -9,6 +9,7 @@
 #include "decode/decoder.h"
 #include "encode/encoder.h"
 #include "mesh/face_correspondence.h"
+#include "mesh/mesh_check.h"
 #include "container/file_format.h"
 #include "progress.h"
 #include "mesh/quantize.h"
@@ -27,6 +28,9 @@ double maxNormalError(int normalBits) {
 
 Encoded encode(const Mesh& mesh, const EncodeOptions& options) {
     ProgressReporter progress(options.progress);
+    // Indices first: welding, vertex splitting and the corner tables all
+    // index arrays by them before the connectivity coder would check them.
+    checkIndices(mesh);
     checkAttributes(mesh, options);
     const uint32_t keep = attributesOf(mesh) & options.attributes;
     const Grid grid = makeGrid(mesh.positions, options.bits);  // checks bits, emptiness, finiteness

@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "adversarial_options.h"
 #include "test_meshes.h"
@@ -91,6 +92,68 @@ TEST(InputErrors, IndexOutOfRangeInAFaceRepeatingAVertex) {
     drm::Mesh mesh = drm_test::tetrahedron();
     mesh.triangles.insert(mesh.triangles.end(), {7, 7, 1});
     EXPECT_TRUE(refusedNaming(mesh, {"out of range", "refers to vertex"}));
+}
+
+// The tetrahedron with one kind of attribute filled in, each a path of its
+// own through encode() (welding, vertex splitting, corner tables).
+struct AttributeKind {
+    const char* name;
+    void (*fill)(drm::Mesh& mesh);
+};
+const AttributeKind kAttributeKinds[] = {
+    {"none", [](drm::Mesh&) {}},
+    {"colors", [](drm::Mesh& m) { m.colors.assign(4 * m.vertexCount(), 200); }},
+    {"normals", [](drm::Mesh& m) { for (size_t v = 0; v < m.vertexCount(); ++v) m.normals.insert(m.normals.end(), {0, 0, 1}); }},
+    {"texcoords", [](drm::Mesh& m) { m.texCoords.assign(2 * m.vertexCount(), 0.25f); }},
+    {"quality", [](drm::Mesh& m) { m.quality.assign(m.vertexCount(), 1.5f); }},
+    {"corner texcoords", [](drm::Mesh& m) { m.cornerTexCoords.assign(6 * m.faceCount(), 0.5f); }},
+    {"corner normals", [](drm::Mesh& m) { for (size_t c = 0; c < 3 * m.faceCount(); ++c) m.cornerNormals.insert(m.cornerNormals.end(), {1, 0, 0}); }},
+    {"face colors", [](drm::Mesh& m) { m.faceColors.assign(4 * m.faceCount(), 9); }},
+    {"face quality", [](drm::Mesh& m) { m.faceQuality.assign(m.faceCount(), 2.0f); }},
+    {"materials", [](drm::Mesh& m) { m.faceMaterial.assign(m.faceCount(), 0); m.materials = {"stone"}; }},
+    {"textures", [](drm::Mesh& m) { m.faceTexture.assign(m.faceCount(), 0); m.textures = {"stone.png"}; }},
+    {"metadata", [](drm::Mesh& m) { m.metadata = {{"obj.mtllib", "stone.mtl"}}; }},
+    {"all", [](drm::Mesh& m) {
+         m.colors.assign(4 * m.vertexCount(), 200);
+         m.texCoords.assign(2 * m.vertexCount(), 0.25f);
+         m.quality.assign(m.vertexCount(), 1.5f);
+         m.cornerTexCoords.assign(6 * m.faceCount(), 0.5f);
+         m.faceColors.assign(4 * m.faceCount(), 9);
+         m.faceMaterial.assign(m.faceCount(), 0);
+         m.materials = {"stone"};
+     }},
+};
+
+// Every attribute kind, with welding forced on, off or left to the encoder,
+// and an index just past the vertices, far past them, or at the top of
+// uint32_t: the error names the face and the index, whichever path through
+// encode() would have read the index first.
+TEST(InputErrors, IndexOutOfRangeWithEachAttributeKind) {
+    const uint32_t badIndices[] = {4u, 1000000000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+    const drm::EncodeOptions::Weld welds[] = {drm::EncodeOptions::Weld::Auto, drm::EncodeOptions::Weld::On,
+                                              drm::EncodeOptions::Weld::Off};
+    for (const AttributeKind& kind : kAttributeKinds)
+        for (uint32_t bad : badIndices)
+            for (drm::EncodeOptions::Weld weld : welds)
+                for (size_t face : {size_t(0), size_t(3)}) {
+                    drm::Mesh mesh = drm_test::tetrahedron();
+                    kind.fill(mesh);
+                    mesh.triangles[3 * face + 2] = bad;
+                    drm::EncodeOptions options;
+                    options.weld = weld;
+                    const std::string where = std::string(kind.name) + ", index " + std::to_string(bad) + ", face " +
+                                              std::to_string(face) + ", weld " + std::to_string(int(weld));
+                    try {
+                        drm::encode(mesh, options);
+                        ADD_FAILURE() << "accepted: " << where;
+                    } catch (const drm::Error& e) {
+                        EXPECT_EQ(e.kind(), drm::ErrorKind::InvalidInput) << where;
+                        const std::string message = e.what();
+                        EXPECT_NE(message.find("face " + std::to_string(face)), std::string::npos) << where << ": " << message;
+                        EXPECT_NE(message.find("refers to vertex " + std::to_string(bad)), std::string::npos)
+                            << where << ": " << message;
+                    }
+                }
 }
 
 }  // namespace
