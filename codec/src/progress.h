@@ -27,12 +27,14 @@ public:
 
 private:
     void report(double fraction) {
-        if (callback_ && !callback_(fraction, stage_)) throw Error(ErrorKind::Cancelled, "cancelled");
+        if (fraction > highest_) highest_ = fraction;
+        if (callback_ && !callback_(highest_, stage_)) throw Error(ErrorKind::Cancelled, "cancelled");
     }
 
     const Progress& callback_;
     const char* stage_ = "";
     unsigned ticks_ = 0;
+    double highest_ = 0;
 };
 
 }  // namespace drm

@@ -1,7 +1,8 @@
 // ProgressReporter (progress.h): a stage reports at once with its name,
 // ticks report every 4096th call only (tickWith works the fraction out only
 // then), a callback that says stop turns into an Error of kind Cancelled,
-// and no callback costs nothing and never cancels.
+// no callback costs nothing and never cancels, and the fraction reported
+// never falls.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -32,6 +33,19 @@ TEST(ProgressReporter, AStageReportsAtOnce) {
     ASSERT_EQ(calls.seen.size(), 2u);
     EXPECT_EQ(calls.seen[0], std::make_pair(0.25, std::string("ranking")));
     EXPECT_EQ(calls.seen[1], std::make_pair(0.5, std::string("coding")));
+}
+
+TEST(ProgressReporter, TheFractionNeverFalls) {
+    Calls calls;
+    const Progress callback = calls.callback();
+    ProgressReporter progress(callback);
+    progress.stage("first attempt", 0.05);
+    progress.stage("first attempt, vertices", 0.9);
+    progress.stage("second attempt", 0.05);
+    progress.stage("done", 1.0);
+    ASSERT_EQ(calls.seen.size(), 4u);
+    EXPECT_EQ(calls.seen[2], std::make_pair(0.9, std::string("second attempt")));
+    EXPECT_EQ(calls.seen[3].first, 1.0);
 }
 
 TEST(ProgressReporter, TicksReportEvery4096thCallUnderTheLastStage) {
