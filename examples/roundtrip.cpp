@@ -1,8 +1,8 @@
 // Encodes an octahedron, inspects the file, decodes it and checks that the
 // same oriented triangles come back over the same grid points; then shows
 // the kind of error a damaged file gives. Prints one line per step; exits
-// non-zero on any mismatch. Uses only <drm/drm.h>.
-#include <drm/drm.h>
+// non-zero on any mismatch. Uses only <drmcodec/drmcodec.h>.
+#include <drmcodec/drmcodec.h>
 
 #include <algorithm>
 #include <array>

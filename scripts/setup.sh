@@ -22,7 +22,9 @@ packages=(
   clang libfuzzer-14-dev libclang-rt-14-dev
   libdraco-dev draco libmeshoptimizer-dev libopenctm-dev libzstd-dev   # drm-peer-bench only
   python3-matplotlib python3-numpy   # tools/bench/make_plots.py, make_big_mesh.py, measure_scale.py
-  python3-dev python3-pybind11 pybind11-dev python3-pytest   # the Python module (python/) and its test
+  python3-dev python3-pybind11 pybind11-dev python3-pytest   # the Python package (python/) and its tests
+  python3-setuptools python3-venv python3-pip   # pip install --no-build-isolation . (tests/install)
+  python3-distributed   # drm.batch on a Dask cluster (dask-scheduler, dask-worker, dask-ssh)
 )
 
 as_root() {

@@ -3,7 +3,7 @@
 
 #include <drm_vcg/mesh_io.h>
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <algorithm>
 #include <atomic>

@@ -3,7 +3,7 @@
 #ifndef DRM_TOOLS_CLI_H
 #define DRM_TOOLS_CLI_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <map>
 #include <stdexcept>

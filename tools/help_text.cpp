@@ -1,6 +1,6 @@
 #include "help_text.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <sstream>
 #include <string>

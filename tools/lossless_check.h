@@ -2,7 +2,7 @@
 #ifndef DRM_TOOLS_LOSSLESS_CHECK_H
 #define DRM_TOOLS_LOSSLESS_CHECK_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <string>
 

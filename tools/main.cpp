@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "help_text.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstdio>
 #include <cstring>

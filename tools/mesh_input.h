@@ -2,7 +2,7 @@
 #ifndef DRM_TOOLS_MESH_INPUT_H
 #define DRM_TOOLS_MESH_INPUT_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/mesh_io.h>
 
 #include <string>

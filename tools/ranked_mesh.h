@@ -6,7 +6,7 @@
 
 #include "cli.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstdint>
 #include <string>

@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "connectivity/connectivity_coders.h"
 #include "geometry/geometry_coders.h"
 

@@ -2,7 +2,7 @@
 // decoding a section (docs/library.md). Reads what decode() reads first
 // (readFile), so it refuses the same malformed files.
 #include "attributes/attribute_sections.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "container/file_format.h"
 #include "geometry/geometry_coders.h"
 #include "stats.h"

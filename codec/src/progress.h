@@ -1,8 +1,11 @@
 // Throttled progress reporting and cancellation for long encodes and decodes.
+// The fraction reported never falls: the encoder's later attempts start
+// their stages again from low fractions, and a progress bar must not run
+// backwards.
 #ifndef DRM_PROGRESS_H
 #define DRM_PROGRESS_H
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 

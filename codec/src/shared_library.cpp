@@ -1,4 +1,4 @@
-// libdrm_codec.so is made of libdrm_codec.a's objects (codec/CMakeLists.txt
+// libdrmcodec.so is made of libdrmcodec.a's objects (codec/CMakeLists.txt
 // links the archive whole); a shared library target needs one source of
 // its own, and this is it.
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"

@@ -7,7 +7,7 @@
 
 #include <cstddef>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "container/file_format.h"
 #include "mesh/repair_section.h"
 

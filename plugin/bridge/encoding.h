@@ -2,7 +2,7 @@
 #ifndef DRM_MESHLAB_ENCODING_H
 #define DRM_MESHLAB_ENCODING_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <string>
 

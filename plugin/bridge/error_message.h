@@ -9,7 +9,7 @@
 #include <new>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm_meshlab {
 

@@ -8,7 +8,7 @@
 #ifndef DRM_MESHLAB_LOG_TEXT_H
 #define DRM_MESHLAB_LOG_TEXT_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstdint>
 #include <string>

@@ -8,7 +8,7 @@
 
 #include "bridge/meshlab_api.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <QString>
 

@@ -4,7 +4,7 @@
 
 #include "bridge/meshlab_api.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 namespace drm_meshlab {
 

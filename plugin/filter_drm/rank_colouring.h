@@ -6,7 +6,7 @@
 
 #include "bridge/meshlab_api.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstdint>
 #include <string>

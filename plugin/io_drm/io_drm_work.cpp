@@ -7,7 +7,7 @@
 #include "bridge/lost_attributes.h"
 #include "bridge/progress_bridge.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/joined_list.h>
 #include <drm_vcg/vcg_attributes.h>

@@ -2,7 +2,7 @@
 // (checked against the file's own text), and what the writers write reads
 // back identical (PLY) or identical per corner (OBJ, which holds per-corner
 // values and no alpha or quality).
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/mesh_io.h>
 
 #include <gtest/gtest.h>

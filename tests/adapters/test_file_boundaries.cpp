@@ -2,7 +2,7 @@
 // a file's structure: a mesh someone sends must not make drm read a file
 // outside its folder (and ship it inside a .drm), nor a .drm make decoding
 // write anything but the outputs named. Canary files check both.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
 

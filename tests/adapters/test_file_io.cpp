@@ -1,5 +1,5 @@
 // Atomic writes: a file appears complete or not at all.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/mesh_io.h>
 

@@ -6,7 +6,7 @@
 // user: ctest runs this binary a second time as `nobody` (adapter_tests.
 // as_user, tests/adapters/run_as_user.sh), and the tests that need a
 // non-root user skip themselves, saying so, when run as root.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/file_io.h>
 
 #include <gtest/gtest.h>

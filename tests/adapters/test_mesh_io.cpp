@@ -2,7 +2,7 @@
 // every face (degenerate or not), file order, corner order. vcglib's OFF and
 // binary STL readers are checked here as much as ours, since their cleaning
 // would break the codec's lossless promise.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/mesh_io.h>
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // cannot read it refuses with a message naming the place. The files are
 // made here, from a header and the values of the body in file order, so
 // that each case shows the bytes it is about.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/mesh_io.h>
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // toVcg/fromVcg keep order, and fromVcg leaves out what MeshLab deleted.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/rank_palette.h>
 #include <drm_vcg/vcg_mesh.h>
 

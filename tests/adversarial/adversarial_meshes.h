@@ -5,7 +5,7 @@
 #ifndef DRM_TEST_ADVERSARIAL_MESHES_H
 #define DRM_TEST_ADVERSARIAL_MESHES_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <string>
 #include <vector>

@@ -4,7 +4,7 @@
 #ifndef DRM_TEST_ADVERSARIAL_OPTIONS_H
 #define DRM_TEST_ADVERSARIAL_OPTIONS_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <string>
 #include <vector>

@@ -10,7 +10,7 @@
 #ifndef DRM_TEST_ADVERSARIAL_MESH_COMPARE_H
 #define DRM_TEST_ADVERSARIAL_MESH_COMPARE_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <gtest/gtest.h>
 

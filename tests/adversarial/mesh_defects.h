@@ -14,7 +14,7 @@
 #ifndef DRM_TEST_ADVERSARIAL_MESH_DEFECTS_H
 #define DRM_TEST_ADVERSARIAL_MESH_DEFECTS_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 // Every adversarial mesh, with every option set, decodes to the input:
 // same vertex and face counts, same grid points, same oriented triangles.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // Reading them takes about a minute in all (igea has 270k faces).
 // Without the corpus these tests are skipped, unless CI=true, when the
 // missing corpus is a failure.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // What no repair can save: an empty mesh, a coordinate that is not a
 // number or not finite, a face naming a vertex that does not exist. encode
 // throws drm::Error, and its message names the problem.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // vertices, loose faces for faces repeating a vertex. Decoded, repeated
 // faces and then loose faces come after the traversal's faces, each group
 // in input order (drm.h).
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <gtest/gtest.h>
 

@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "option_sets.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "decode_checks.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {

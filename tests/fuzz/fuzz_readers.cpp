@@ -6,7 +6,7 @@
 //
 // Input: one byte choosing the format, then the file's bytes. For OBJ, a
 // 0xFF byte splits the input into the OBJ and its library "m.mtl".
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/mesh_io.h>
 
 #include <cstdint>

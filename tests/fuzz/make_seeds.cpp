@@ -15,7 +15,7 @@
 #include <fstream>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "option_sets.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"

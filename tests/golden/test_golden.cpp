@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "drm_sections.h"
 #include "drm_vcg/file_io.h"
 #include "drm_vcg/mesh_io.h"

@@ -10,7 +10,7 @@
 // those are skipped. crank and cycloidal take about 10 s together and check
 // the grid's hierarchy of cells (the size step's wide balls: FLANN's index
 // never takes that path) where it is used most.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <gtest/gtest.h>
 

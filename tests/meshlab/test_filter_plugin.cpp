@@ -7,7 +7,7 @@
 
 #include "bridge/encode_parameters.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/rank_palette.h>
 #include <drm_vcg/vcg_mesh.h>
 

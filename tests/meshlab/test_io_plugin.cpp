@@ -10,7 +10,7 @@
 
 #include "bridge/encode_parameters.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/file_io.h>
 #include <drm_vcg/vcg_mesh.h>
 #include <vcg/complex/algorithms/update/normal.h>

@@ -8,7 +8,7 @@
 #include "bridge/log_text.h"
 #include "bridge/progress_bridge.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/rank_palette.h>
 #include <drm_vcg/vcg_mesh.h>
 #include <vcg/complex/algorithms/update/normal.h>

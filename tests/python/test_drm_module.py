@@ -1,4 +1,4 @@
-"""Tests of the Python module `drm` (python/drm_module.cpp), run by ctest
+"""Tests of the Python module `drm` (python/), run by ctest
 with PYTHONPATH=build/python under /usr/bin/python3.
 
 Every corpus mesh (../shared/meshes/*.ply beside the clone, DRM_CORPUS) and

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "option_sets.h"
 #include "test_meshes.h"
 

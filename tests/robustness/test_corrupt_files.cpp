@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "drm_sections.h"
 #include "option_sets.h"
 #include "samples.h"

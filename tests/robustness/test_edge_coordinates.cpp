@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "option_sets.h"
 #include "test_meshes.h"
 

@@ -7,7 +7,7 @@
 #include <exception>
 
 #include "decode_checks.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "watchdog.h"
 
 namespace drm_test {

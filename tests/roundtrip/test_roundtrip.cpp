@@ -2,7 +2,7 @@
 // the file's statistics agree with counts taken from the input itself.
 // The checks here are written from the API's promises, not taken from the
 // codec or the tool, so a shared mistake cannot hide.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/mesh_io.h>
 
 #include <gtest/gtest.h>

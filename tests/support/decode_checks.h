@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm_test {
 

@@ -5,7 +5,7 @@
 #ifndef DRM_TEST_RANKS_ONLY_H
 #define DRM_TEST_RANKS_ONLY_H
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm_test {
 

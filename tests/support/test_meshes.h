@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm_test {
 

@@ -12,7 +12,7 @@
 // sets that take the other paths (refine with its low bits searched or
 // given, the tree, raw); and the shared corpus (../shared/meshes beside
 // the project, one ctest test per mesh; skipped without it).
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <gtest/gtest.h>
 

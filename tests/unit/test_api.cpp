@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace {
 

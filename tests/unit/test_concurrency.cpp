@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "concurrency.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 namespace {

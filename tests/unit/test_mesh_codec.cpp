@@ -5,7 +5,7 @@
 #include <functional>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "test_meshes.h"
 
 namespace {

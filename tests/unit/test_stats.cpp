@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "container/file_format.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/repair_section.h"
 #include "stats.h"
 #include "test_meshes.h"

@@ -8,7 +8,7 @@
 // Without ROLE: a table of wall times, best of 3, both roles, both indexes.
 // With ROLE INDEX REPS: that measurement alone, REPS times (INDEX none: only
 // the setup), for callgrind.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <algorithm>
 #include <chrono>

@@ -3,7 +3,7 @@
 #ifndef DRM_TOOLS_BENCH_PEER_H
 #define DRM_TOOLS_BENCH_PEER_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstdint>
 #include <memory>

@@ -8,7 +8,7 @@
 // For each mesh, at 12 bits: drm's default file (connectivity and geometry
 // sections, bits per input vertex), the topological coder's two streams over
 // the same manifold cut, and where its bits go by symbol.
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 #include <drm_vcg/mesh_io.h>
 
 #include <cstdio>

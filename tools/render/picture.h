@@ -7,7 +7,7 @@
 #include "camera.h"
 #include "shading.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
 // Whole-file reads and atomic writes (see drm_vcg/file_io.h).
 #include "drm_vcg/file_io.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cerrno>
 #include <cstdio>

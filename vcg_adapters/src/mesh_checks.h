@@ -3,7 +3,7 @@
 #ifndef DRM_VCG_MESH_CHECKS_H
 #define DRM_VCG_MESH_CHECKS_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <string>
 

@@ -8,7 +8,7 @@
 #ifndef DRM_VCG_OBJ_READER_H
 #define DRM_VCG_OBJ_READER_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <string>
 #include <vector>

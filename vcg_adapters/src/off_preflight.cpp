@@ -3,7 +3,7 @@
 // accepted here is read by vcglib without surprises.
 #include "format_preflight.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cerrno>
 #include <cstdlib>

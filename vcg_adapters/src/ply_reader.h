@@ -17,7 +17,7 @@
 #ifndef DRM_VCG_PLY_READER_H
 #define DRM_VCG_PLY_READER_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstddef>
 #include <cstdint>

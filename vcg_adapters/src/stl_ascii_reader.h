@@ -6,7 +6,7 @@
 #ifndef DRM_VCG_STL_ASCII_READER_H
 #define DRM_VCG_STL_ASCII_READER_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstddef>
 #include <string>

@@ -1,7 +1,7 @@
 // preflightStl: see format_preflight.h for why.
 #include "format_preflight.h"
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <algorithm>
 #include <cctype>

@@ -8,7 +8,7 @@
 #ifndef DRM_VCG_STL_WELD_H
 #define DRM_VCG_STL_WELD_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 namespace drm {
 namespace vcgio {

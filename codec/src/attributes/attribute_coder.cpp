@@ -8,7 +8,7 @@
 #include "entropy/bit_model.h"
 #include "common.h"
 #include "container/byte_io.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "attributes/octahedral.h"
 #include "entropy/range_coder.h"
 

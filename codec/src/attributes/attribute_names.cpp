@@ -1,7 +1,7 @@
 // Names of the attributes a .drm file can carry, and which a mesh carries.
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 namespace {

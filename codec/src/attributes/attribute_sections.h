@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "container/file_format.h"
 
 namespace drm {

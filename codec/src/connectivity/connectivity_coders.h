@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 

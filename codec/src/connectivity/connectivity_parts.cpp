@@ -4,7 +4,7 @@
 #include <string>
 
 #include "container/byte_io.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 

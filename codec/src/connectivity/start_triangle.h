@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "connectivity/traversal.h"
 
 namespace drm {

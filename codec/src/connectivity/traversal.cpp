@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "spatial/spatial_index.h"
 
 namespace drm {

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <utility>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 

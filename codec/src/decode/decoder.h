@@ -3,7 +3,7 @@
 #ifndef DRM_DECODER_H
 #define DRM_DECODER_H
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "container/file_format.h"
 
 namespace drm {

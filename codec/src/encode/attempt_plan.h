@@ -26,7 +26,7 @@
 #ifndef DRM_ATTEMPT_PLAN_H
 #define DRM_ATTEMPT_PLAN_H
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 

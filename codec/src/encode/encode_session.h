@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "common.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "encode/encoder.h"
 #include "mesh/manifold_cut.h"
 #include "mesh/mesh_check.h"

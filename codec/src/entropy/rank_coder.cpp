@@ -3,7 +3,7 @@
 #include <string>
 
 #include "common.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "geometry/refine_coder.h"
 #include "geometry/tree/tree_coder.h"
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 

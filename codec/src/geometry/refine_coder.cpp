@@ -6,7 +6,7 @@
 
 #include "common.h"
 #include "container/byte_io.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "entropy/range_coder.h"
 #include "entropy/rank_coder.h"
 

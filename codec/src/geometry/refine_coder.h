@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 

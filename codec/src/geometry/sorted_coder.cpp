@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "common.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "spatial/morton.h"
 #include "spatial/morton_order.h"
 #include "entropy/range_coder.h"

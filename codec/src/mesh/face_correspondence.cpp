@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 namespace {

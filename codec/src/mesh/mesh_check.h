@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include <vector>
 
 namespace drm {

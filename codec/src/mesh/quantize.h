@@ -2,7 +2,7 @@
 #ifndef DRM_QUANTIZE_H
 #define DRM_QUANTIZE_H
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "exact_math.h"
 
 #include <string>

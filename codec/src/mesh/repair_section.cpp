@@ -5,7 +5,7 @@
 #include <string>
 
 #include "common.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "entropy/rank_coder.h"
 
 namespace drm {

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "entropy/range_coder.h"
 #include "entropy/rank_coder.h"
 

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "common.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "exact_math.h"
 
 namespace drm {

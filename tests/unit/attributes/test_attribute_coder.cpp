@@ -17,7 +17,7 @@
 #include "attributes/attribute_coder.h"
 #include "attributes/corner_table.h"
 #include "attributes/octahedral.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/quantize.h"
 #include "test_meshes.h"
 

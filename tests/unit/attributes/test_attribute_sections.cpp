@@ -15,7 +15,7 @@
 
 #include "attributes/attribute_sections.h"
 #include "container/file_format.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/quantize.h"
 #include "test_meshes.h"
 

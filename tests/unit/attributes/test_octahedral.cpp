@@ -11,7 +11,7 @@
 #include <random>
 
 #include "attributes/octahedral.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 namespace {

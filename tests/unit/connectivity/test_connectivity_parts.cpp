@@ -11,7 +11,7 @@
 
 #include "ranks_only.h"
 #include "connectivity/connectivity_parts.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "drm_sections.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ranks_only.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "container/file_format.h"
 #include "connectivity/ranked/edge_model.h"
 #include "entropy/rank_coder.h"

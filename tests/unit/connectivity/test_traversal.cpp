@@ -10,7 +10,7 @@
 #include <set>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "connectivity/ranked/gap_closing.h"
 #include "mesh/mesh_check.h"
 #include "tiny_ply.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "container/byte_io.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace {
 

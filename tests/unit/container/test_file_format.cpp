@@ -17,7 +17,7 @@
 #include "container/byte_io.h"
 #include "container/crc32.h"
 #include "container/file_format.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 
 namespace drm {
 namespace {

@@ -17,7 +17,7 @@
 
 #include "container/file_format.h"
 #include "decode/decoder.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"
 

@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "encode/encoder.h"
 #include "encode/encode_session.h"
 #include "mesh/manifold_cut.h"

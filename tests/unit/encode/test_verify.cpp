@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "encode/verify.h"
 #include "test_meshes.h"
 

@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "entropy/rank_coder.h"
 
 namespace {

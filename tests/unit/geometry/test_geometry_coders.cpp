@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "geometry/geometry_coders.h"
 #include "geometry/refine_coder.h"
 #include "mesh/quantize.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "geometry/raw_coder.h"
 
 namespace drm {

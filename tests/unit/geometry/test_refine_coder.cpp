@@ -10,7 +10,7 @@
 #include <random>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "geometry/refine_coder.h"
 #include "geometry/tree/spanning_tree.h"
 #include "tiny_ply.h"

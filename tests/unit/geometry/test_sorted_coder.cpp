@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "geometry/sorted_coder.h"
 #include "tiny_ply.h"
 

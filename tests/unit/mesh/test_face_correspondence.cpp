@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/face_correspondence.h"
 
 namespace drm {

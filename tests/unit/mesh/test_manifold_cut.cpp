@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/manifold_cut.h"
 #include "mesh/mesh_check.h"
 #include "test_meshes.h"

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/quantize.h"
 
 namespace drm {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/repair_section.h"
 
 namespace drm {

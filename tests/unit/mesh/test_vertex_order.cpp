@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/vertex_order.h"
 
 namespace drm {

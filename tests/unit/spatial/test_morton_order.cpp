@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ranks_only.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "spatial/morton.h"
 #include "spatial/morton_order.h"
 #include "tiny_ply.h"

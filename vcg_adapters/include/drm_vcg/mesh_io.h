@@ -7,7 +7,7 @@
 #ifndef DRM_VCG_MESH_IO_H
 #define DRM_VCG_MESH_IO_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstdint>
 #include <string>

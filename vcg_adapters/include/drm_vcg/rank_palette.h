@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <string>
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 namespace drm {
 namespace vcgio {

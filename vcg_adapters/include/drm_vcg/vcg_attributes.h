@@ -10,7 +10,7 @@
 #ifndef DRM_VCG_VCG_ATTRIBUTES_H
 #define DRM_VCG_VCG_ATTRIBUTES_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstddef>
 #include <cstdint>

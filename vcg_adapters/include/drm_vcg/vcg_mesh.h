@@ -7,7 +7,7 @@
 #ifndef DRM_VCG_VCG_MESH_H
 #define DRM_VCG_VCG_MESH_H
 
-#include <drm/drm.h>
+#include <drmcodec/drmcodec.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -9,7 +9,7 @@
 
 #include "connectivity/admissibility.h"
 #include "connectivity/ranked/gap_closing.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "connectivity/ranked/predictor.h"
 #include "connectivity/ranked/rank_search.h"
 

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "exact_math.h"
 #include "connectivity/admissibility.h"
 #include "connectivity/seam_side.h"

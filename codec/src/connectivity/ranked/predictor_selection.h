@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/mesh_check.h"
 
 namespace drm {

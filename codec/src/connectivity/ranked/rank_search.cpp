@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "spatial/spatial_index.h"
 
 namespace drm {

@@ -7,7 +7,7 @@
 #include "connectivity/admissibility.h"
 #include "entropy/bit_model.h"
 #include "common.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "connectivity/topological/front_ranks.h"
 #include "connectivity/ranked/gap_closing.h"
 #include "geometry/tree/local_frame.h"

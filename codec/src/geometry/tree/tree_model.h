@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "common.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "entropy/bit_model.h"
 #include "entropy/rank_coder.h"
 #include "geometry/tree/cell_index.h"

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "ranks_only.h"
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "connectivity/ranked/edge_model.h"
 #include "connectivity/ranked/gap_closing.h"
 #include "mesh/mesh_check.h"

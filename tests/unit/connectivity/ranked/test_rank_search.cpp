@@ -7,7 +7,7 @@
 #include <memory>
 #include <random>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "connectivity/ranked/rank_search.h"
 #include "connectivity/traversal.h"
 #include "spatial/spatial_index.h"

@@ -8,7 +8,7 @@
 #include <array>
 #include <set>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "mesh/manifold_cut.h"
 #include "test_meshes.h"
 #include "tiny_ply.h"

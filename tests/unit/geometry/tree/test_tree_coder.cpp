@@ -9,7 +9,7 @@
 #include <random>
 #include <string>
 
-#include "drm/drm.h"
+#include "drmcodec/drmcodec.h"
 #include "geometry/refine_coder.h"
 #include "geometry/tree/tree_coder.h"
 #include "tiny_ply.h"

@@ -8,8 +8,8 @@
 // Method: P. Marais, J. Gain, D. Shreiner, "Distance-Ranked Connectivity
 // Compression of Triangle Meshes" (the quantized vertex set is coded first;
 // connectivity is the stream of distance ranks of each new triangle's apex).
-#ifndef DRM_DRM_H
-#define DRM_DRM_H
+#ifndef DRMCODEC_DRMCODEC_H
+#define DRMCODEC_DRMCODEC_H
 
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +18,12 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+// Everything declared here is the library's API, exported from
+// libdrmcodec.so; the codec's internals are built hidden.
+#if defined(__GNUC__)
+#pragma GCC visibility push(default)
+#endif
 
 namespace drm {
 
@@ -517,4 +523,8 @@ const char* version();
 
 }  // namespace drm
 
-#endif  // DRM_DRM_H
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
+
+#endif  // DRMCODEC_DRMCODEC_H
