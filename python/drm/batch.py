@@ -165,20 +165,21 @@ def parse_arguments(argv: List[str]) -> argparse.Namespace:
     where.add_argument("--scheduler", help="address of a Dask scheduler, e.g. tcp://10.0.0.1:8786")
     where.add_argument("--workers", type=int, help="processes of a local cluster (default: the cores)")
     p.add_argument("--manifest", help=f"the manifest file (default: DIR/{MANIFEST_NAME})")
-    p.add_argument("--bits", type=int)
-    p.add_argument("--refine-bits", type=int)
-    p.add_argument("--normal-bits", type=int)
-    p.add_argument("--uv-bits", type=int)
-    p.add_argument("--predictor")
-    p.add_argument("--geometry")
-    p.add_argument("--connectivity")
-    p.add_argument("--levers")
-    p.add_argument("--weld", choices=("auto", "on", "off"))
-    p.add_argument("--attributes")
-    p.add_argument("--curvature", choices=("on", "off"))
-    p.add_argument("--start", choices=("search", "smallest"))
-    p.add_argument("--keep-vertex-order", action="store_true")
-    p.add_argument("--verify", action="store_true")
+    e = p.add_argument_group("encoding options", "as `drm encode`'s, with its defaults (`drm help encode`)")
+    e.add_argument("--bits", type=int, help="quantization bits per axis")
+    e.add_argument("--refine-bits", type=int, help="low bits the refine coder codes")
+    e.add_argument("--normal-bits", type=int, help="normal quantization bits")
+    e.add_argument("--uv-bits", type=int, help="texture coordinate quantization bits")
+    e.add_argument("--predictor", help="auto, parallelogram or midpoint")
+    e.add_argument("--geometry", help="auto, tree, refine, sorted or raw")
+    e.add_argument("--connectivity", help="auto, ranks or topological")
+    e.add_argument("--levers", help="all, none or a list")
+    e.add_argument("--weld", choices=("auto", "on", "off"))
+    e.add_argument("--attributes", help="all, none or a list of the attributes to keep")
+    e.add_argument("--curvature", choices=("on", "off"))
+    e.add_argument("--start", choices=("search", "smallest"))
+    e.add_argument("--keep-vertex-order", action="store_true")
+    e.add_argument("--verify", action="store_true", help="decode each file and compare before writing it")
     args = p.parse_args(argv)
     if args.workers is not None and args.workers < 1:
         p.error("--workers takes a number of processes, 1 or more")
@@ -186,7 +187,11 @@ def parse_arguments(argv: List[str]) -> argparse.Namespace:
 
 
 def _client(args: argparse.Namespace):
-    from dask.distributed import Client, LocalCluster
+    try:
+        from dask.distributed import Client, LocalCluster
+    except ImportError:
+        raise SystemExit("drm.batch: needs Dask's distributed scheduler (Debian: python3-distributed; "
+                         "pip: distributed)") from None
 
     if args.scheduler:
         return Client(args.scheduler, timeout="30s"), None
@@ -232,9 +237,9 @@ def main(argv: Optional[List[str]] = None) -> int:
     bytes_in = bytes_out = 0
     start = time.perf_counter()
     if todo:
+        client, cluster = _client(args)
         from dask.distributed import as_completed
 
-        client, cluster = _client(args)
         try:
             workers = len(client.scheduler_info().get("workers", {}))
             print(f"drm.batch: {workers} workers at {client.scheduler.address}", flush=True)
