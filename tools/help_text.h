@@ -1,4 +1,4 @@
-// The limits and names the help texts quote, filled in from drm.h when a
+// The limits and names the help texts quote, filled in from drmcodec.h when a
 // help is printed, so `drm help encode` cannot drift from what the codec
 // takes. A help text writes {bits} for "1..21", {levers} for "filter, gap,
 // context, angle, front, boundary" and so on (the list is in help_text.cpp).

@@ -100,7 +100,7 @@ double angleDegrees(const float* a, const float* b) {
     return std::acos(c) * 180.0 / 3.14159265358979323846;
 }
 
-// Half a step of the grid drm.h describes: 2^bits - 1 steps across the
+// Half a step of the grid drmcodec.h describes: 2^bits - 1 steps across the
 // wider axis of the values' range.
 double halfStep(const std::vector<float>& values, int bits) {
     if (values.empty()) return 0;

@@ -31,7 +31,7 @@ std::string findAttributeMismatch(const drm::Mesh& input, const drm::EncodeOptio
                                   const drm::Encoded& encoded, const drm::Decoded& decoded);
 
 // The largest angle, in degrees, between a normal and its decoded value
-// that `normalBits` allows (0.2 degrees at 10 bits, as drm.h states,
+// that `normalBits` allows (0.2 degrees at 10 bits, as drmcodec.h states,
 // doubling for each bit fewer).
 double normalAngleBound(int normalBits);
 

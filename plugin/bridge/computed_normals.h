@@ -15,7 +15,7 @@ namespace drm_meshlab {
 
 // The largest angle between a vertex's normal and the computed one, in
 // radians, for the two to count as the same: 0.08 degrees, below the 0.17
-// degrees to which a .drm file keeps normals (drm.h, normal bits 10).
+// degrees to which a .drm file keeps normals (drmcodec.h, normal bits 10).
 extern const double kComputedNormalTolerance;
 
 // True when every live vertex's normal points the way the angle-weighted

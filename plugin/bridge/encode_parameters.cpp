@@ -15,7 +15,7 @@ const char* const kVerifyLabel = "Verify";
 
 namespace {
 
-// drm.h's range, so the dialog, its help and its refusals say what the codec takes.
+// drmcodec.h's range, so the dialog, its help and its refusals say what the codec takes.
 const int kMinBits = drm::kMinQuantizationBits;
 const int kMaxBits = drm::kMaxQuantizationBits;
 

@@ -32,7 +32,7 @@ void addVerify(RichParameterList& parameters);
 
 // The codec's default options with those of the parameters present in
 // `parameters` applied. Throws drm::Error naming the parameter by its label
-// ("Quantization bits must be between 1 and 21, not 0", the range from drm.h) when a value
+// ("Quantization bits must be between 1 and 21, not 0", the range from drmcodec.h) when a value
 // is out of range, so a bad .mlx value is refused with a sentence, not by
 // an assertion deep in the codec.
 drm::EncodeOptions encodeOptionsFrom(const RichParameterList& parameters);

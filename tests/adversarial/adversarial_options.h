@@ -66,7 +66,7 @@ inline const std::vector<NamedOptions>& adversarialOptions() {
     return all;
 }
 
-// drm.h: the raw coder and keepVertexOrder keep the input vertex order.
+// drmcodec.h: the raw coder and keepVertexOrder keep the input vertex order.
 inline bool keepsInputOrder(const drm::EncodeOptions& o) {
     return o.keepVertexOrder || o.geometry == drm::GeometryCoder::Raw;
 }

@@ -1,5 +1,5 @@
 // Is a decoded mesh the input mesh, up to quantization? Checked from the
-// promises of drm.h alone, without the codec's own comparison:
+// promises of drmcodec.h alone, without the codec's own comparison:
 //   - as many vertices and faces as the input;
 //   - Encoded::vertexOrder is a permutation, decoded vertex i being input
 //     vertex vertexOrder[i];

@@ -3,7 +3,7 @@
 // bits for turned-over faces, references for faces over an earlier face's
 // vertices, loose faces for faces repeating a vertex. Decoded, repeated
 // faces and then loose faces come after the traversal's faces, each group
-// in input order (drm.h).
+// in input order (drmcodec.h).
 #include <drmcodec/drmcodec.h>
 
 #include <gtest/gtest.h>

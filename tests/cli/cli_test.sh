@@ -44,7 +44,7 @@ expect_png() {
 }
 
 # palette_colour NAME: the hex colour `drm ranks` lists for a bucket of the
-# rank palette ("rank 1", ...), so the tests follow drm.h's palette.
+# rank palette ("rank 1", ...), so the tests follow drmcodec.h's palette.
 palette_colour() {
     "$drm" ranks "$data/torus.ply" palette.ply >palette.txt 2>&1 || fail "ranks for the palette: $(cat palette.txt)"
     sed -n "s/^  $1  *#\([0-9a-f]\{6\}\) .*/\1/p" palette.txt
@@ -397,7 +397,7 @@ readme_palette)
     ;;
 readme_limits)
     # docs/cli.md, docs/meshlab.md and docs/format.md quote the limits and
-    # names drm.h holds, as `drm help encode` (filled in from drm.h) and a
+    # names drmcodec.h holds, as `drm help encode` (filled in from drmcodec.h) and a
     # written file give them.
     cli_doc="$data/../../docs/cli.md"
     format="$data/../../docs/format.md"

@@ -1,6 +1,6 @@
 // libFuzzer target: drm::decode on arbitrary bytes.
 //
-// drm.h promises that decode throws drm::Error for bad data and never
+// drmcodec.h promises that decode throws drm::Error for bad data and never
 // crashes or reads out of bounds. So drm::Error is the only exception caught
 // here: anything else escapes and libFuzzer reports it, as it reports
 // AddressSanitizer and UndefinedBehaviorSanitizer findings, timeouts and

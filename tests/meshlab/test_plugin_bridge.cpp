@@ -231,7 +231,7 @@ TEST(ExportDialog, HelpIsShortAndErrorsUseTheLabels) {
         FAIL() << "0 bits accepted";
     } catch (const drm::Error& e) {
         EXPECT_EQ(e.kind(), drm::ErrorKind::InvalidInput);
-        // The sentence MeshLab shows, naming the dialog's label and drm.h's range.
+        // The sentence MeshLab shows, naming the dialog's label and drmcodec.h's range.
         EXPECT_EQ(std::string(e.what()), "Quantization bits must be between " + std::to_string(drm::kMinQuantizationBits) +
                                              " and " + std::to_string(drm::kMaxQuantizationBits) + ", not 0");
     }

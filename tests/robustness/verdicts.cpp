@@ -36,7 +36,7 @@ Outcome decodeGuarded(const Bytes& input, const std::string& label) {
         o.decodeRefusal = isDecodeRefusal(e);
         o.message = e.what();
     } catch (const std::exception& e) {
-        // drm.h allows only drm::Error: std::bad_alloc from a size taken
+        // drmcodec.h allows only drm::Error: std::bad_alloc from a size taken
         // from the file, or std::out_of_range, is a decoder bug.
         o.foreign = e.what();
     }

@@ -1,4 +1,4 @@
-// Decodes damaged inputs and checks each outcome against what drm.h
+// Decodes damaged inputs and checks each outcome against what drmcodec.h
 // promises, counting failures instead of stopping at the first, so one run
 // reports how many of thousands of inputs misbehave and names the first few.
 #ifndef DRM_TEST_VERDICTS_H

@@ -11,7 +11,7 @@
 
 namespace drm_test {
 
-// The kinds drm::decode may refuse a buffer with (drm.h): damaged or
+// The kinds drm::decode may refuse a buffer with (drmcodec.h): damaged or
 // foreign data, a version or coder it does not know, or a cancel. Never
 // InvalidInput, Io or Internal, and never an empty sentence.
 inline bool isDecodeRefusal(const drm::Error& e) {

@@ -35,7 +35,7 @@ TEST(ErrorKinds, NamesAreDistinct) {
     for (drm::ErrorKind k : {drm::ErrorKind::InvalidInput, drm::ErrorKind::Corrupt, drm::ErrorKind::Unsupported,
                              drm::ErrorKind::Cancelled, drm::ErrorKind::Io, drm::ErrorKind::Internal})
         EXPECT_TRUE(names.insert(drm::errorKindName(k)).second) << drm::errorKindName(k);
-    // drm.h's list, word for word.
+    // drmcodec.h's list, word for word.
     EXPECT_EQ(names, (std::set<std::string>{"invalid input", "corrupt", "unsupported", "cancelled", "i/o", "internal"}));
 }
 
@@ -60,7 +60,7 @@ TEST(Names, PredictorsAndCodersParseBackTheirNames) {
     for (drm::GeometryCoder g : {drm::GeometryCoder::Auto, drm::GeometryCoder::Raw, drm::GeometryCoder::SpanningTree,
                                  drm::GeometryCoder::Refine, drm::GeometryCoder::Sorted})
         EXPECT_EQ(drm::parseGeometryCoder(drm::geometryCoderName(g)), g);
-    // The names drm.h documents for the parsers.
+    // The names drmcodec.h documents for the parsers.
     EXPECT_EQ(drm::parseGeometryCoder("tree"), drm::GeometryCoder::SpanningTree);
     EXPECT_EQ(drm::parsePredictor("midpoint"), drm::Predictor::Midpoint);
     EXPECT_EQ(drm::parseConnectivityCoder("topological"), drm::ConnectivityCoder::Topological);

@@ -11,7 +11,7 @@ namespace drm {
 namespace vcgio {
 
 // Throws drm::Error("cannot write PATH: reason") if the mesh's arrays do
-// not have the sizes drm.h gives them, a face refers to a missing vertex,
+// not have the sizes drmcodec.h gives them, a face refers to a missing vertex,
 // or a face's texture or material index is out of its list.
 void checkMeshForWriting(const std::string& path, const drm::Mesh& mesh);
 

@@ -30,7 +30,7 @@ constexpr size_t kRefineAttemptsBesideUpToVertices = size_t(1) << 18;
 constexpr double kSureTreeTotal = 1.2;
 
 // GeometryCoder::Auto: the tree, and where it spends more than
-// kAutoRefineAboveBitsPerVertex also refine with kAutoRefineLowBits (drm.h);
+// kAutoRefineAboveBitsPerVertex also refine with kAutoRefineLowBits (drmcodec.h);
 // refine is kept where its file is at least kAutoRefineMinimumGainPercent
 // smaller, since it decodes 20-30 % slower (a second pass over the
 // triangles, ranks on a coarser grid). Refine never wins where the tree is

@@ -24,7 +24,7 @@
 namespace drm {
 
 // The encoder tries lowBits 1..kMaxTriedRefineBits; a file may hold up to
-// kMaxRefineBits (always fewer than the quantization bits): both in drm.h.
+// kMaxRefineBits (always fewer than the quantization bits): both in drmcodec.h.
 
 // How a vertex's full position is predicted (the encoder tries each and
 // records the best in the section):

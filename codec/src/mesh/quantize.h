@@ -10,7 +10,7 @@
 
 namespace drm {
 
-constexpr int kMinBits = kMinQuantizationBits;  // drm.h
+constexpr int kMinBits = kMinQuantizationBits;  // drmcodec.h
 constexpr int kMaxBits = kMaxQuantizationBits;
 
 inline int32_t gridMax(int bits) { return int32_t((int64_t(1) << bits) - 1); }

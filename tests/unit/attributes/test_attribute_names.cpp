@@ -1,5 +1,5 @@
 // The attributes' names (attributes/attribute_names.cpp, declared in
-// drm.h): every subset names and parses back, "all" and "none" included; an
+// drmcodec.h): every subset names and parses back, "all" and "none" included; an
 // unknown name is refused naming it and the choices; sectionAttributes
 // tells what each section's name keeps; attributesOf sees each array.
 #include <gtest/gtest.h>

@@ -215,7 +215,7 @@ TEST(Attributes, BadValuesAndSizesAreNamed) {
         FAIL() << "a NaN normal was taken";
     } catch (const drm::Error& e) {
         EXPECT_EQ(e.kind(), drm::ErrorKind::InvalidInput) << e.what();
-        // The message names the element at fault (drm.h's promise), so it is checked too.
+        // The message names the element at fault (drmcodec.h's promise), so it is checked too.
         EXPECT_NE(std::string(e.what()).find("vertex 5"), std::string::npos) << e.what();
     }
     m = decoratedSphere();

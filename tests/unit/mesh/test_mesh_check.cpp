@@ -170,7 +170,7 @@ Mesh tetrahedron() {
 
 TEST(MeshCheck, RefusesOnlyWhatNoFileCanHold) {
     // A refusal is InvalidInput, and its message names the element at
-    // fault (drm.h's promise): the text is checked for that.
+    // fault (drmcodec.h's promise): the text is checked for that.
     auto message = [](const Mesh& m) {
         try {
             encode(m);
