@@ -25,6 +25,7 @@ packages=(
   python3-dev python3-pybind11 pybind11-dev python3-pytest   # the Python package (python/) and its tests
   python3-setuptools python3-venv python3-pip   # pip install --no-build-isolation . (tests/install)
   python3-distributed   # drm.batch on a Dask cluster (dask-scheduler, dask-worker, dask-ssh)
+  emscripten chromium   # web/: the WebAssembly decoder, and its viewer's test in headless Chromium
 )
 
 as_root() {
@@ -33,6 +34,10 @@ as_root() {
   else echo "setup: need root or sudo to install: $*" >&2; exit 1
   fi
 }
+
+# Node.js and npm for web/ (Debian's nodejs and npm unless a Node.js with
+# its own npm is installed already).
+command -v npm > /dev/null || packages+=(nodejs npm)
 
 missing=()
 for p in "${packages[@]}"; do
