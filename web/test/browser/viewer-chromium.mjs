@@ -3,21 +3,38 @@
 // faces by rank on request (the palette's green, orange and red appear),
 // reports the codec's message for a refused file, and its workers decode
 // every golden file to the same arrays as decode() on the page's thread.
-// Saves the rank view to web/build/web-viewer.png, or to
+// decode() in the page gives every golden file and every corpus file that
+// npm test encoded (web/build/test/corpus/) the positions and triangles
+// `drm decode` writes: SHA-256 digests of the arrays, taken in the page and
+// from the CLI's PLY files in Node, agree. Saves the rank view to web/build/web-viewer.png, or to
 // DRM_VIEWER_SCREENSHOT (docs/images/web-viewer.png is made so).
 //
 //   node test/browser/viewer-chromium.mjs        (CHROMIUM=/path overrides /usr/bin/chromium)
 import { chromium } from 'playwright-core';
-import { mkdirSync, readdirSync } from 'node:fs';
+import { createHash } from 'node:crypto';
+import { existsSync, mkdirSync, readdirSync, readFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { serve } from '../../viewer/serve.mjs';
+import { decodeAll, listFiles } from '../cli.js';
+import { readPly, interleave } from '../ply.js';
 
 const WEB = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const ROOT = resolve(WEB, '..');
 const GOLDEN = join(ROOT, 'tests', 'golden');
 const SCREENSHOT = process.env.DRM_VIEWER_SCREENSHOT || join(WEB, 'build', 'web-viewer.png');
 const FILE = 'bunny-lres.drm';
+const CORPUS = join(WEB, 'build', 'test', 'corpus');
+
+// The digest of a decoded mesh: SHA-256 of its positions' bytes, then its
+// triangles' (little-endian float32 and uint32, as both arrays hold them).
+function cliDigest(ply) {
+  const p = readPly(ply);
+  const v = p.vertex.data;
+  const positions = interleave([v.x, v.y, v.z]);
+  const indices = Uint32Array.from(p.face.data.vertex_indices.values);
+  return createHash('sha256').update(new Uint8Array(positions.buffer)).update(new Uint8Array(indices.buffer)).digest('hex');
+}
 
 let failures = 0;
 function check(ok, what) {
@@ -134,6 +151,32 @@ async function main() {
       (pool.mismatched.length ? ` (differ: ${pool.mismatched.join(', ')})` : ''));
     check(pool.detached, 'the files\' buffers are transferred to the workers, not copied');
     check(pool.workers >= 2 && pool.workers <= 3, `the pool holds ${pool.workers} workers (limit 3)`);
+
+    // Every golden file and every corpus file npm test encoded: decode() in
+    // the page against the CLI's decoded PLY.
+    const golden = names.map((f) => join(GOLDEN, f));
+    const corpus = existsSync(CORPUS) ? listFiles(CORPUS, '.drm') : [];
+    const files = [...golden, ...corpus];
+    const expected = [...decodeAll(golden, join(WEB, 'build', 'test', 'browser-golden')),
+      ...decodeAll(corpus, join(CORPUS, 'decoded'))].map((f) => cliDigest(f.ply));
+    const inPage = await page.evaluate(async (encoded) => {
+      const { decode } = await import('/src/index.js');
+      const hex = (b) => [...new Uint8Array(b)].map((x) => x.toString(16).padStart(2, '0')).join('');
+      const out = [];
+      for (const base64 of encoded) {
+        const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+        const m = await decode(bytes);
+        const joined = new Uint8Array(m.positions.byteLength + m.indices.byteLength);
+        joined.set(new Uint8Array(m.positions.buffer, m.positions.byteOffset, m.positions.byteLength));
+        joined.set(new Uint8Array(m.indices.buffer, m.indices.byteOffset, m.indices.byteLength), m.positions.byteLength);
+        out.push(hex(await crypto.subtle.digest('SHA-256', joined)));
+      }
+      return out;
+    }, files.map((f) => readFileSync(f).toString('base64')));
+    const differ = files.filter((f, i) => inPage[i] !== expected[i]);
+    console.log(`# ${golden.length} golden and ${corpus.length} corpus files decoded in the page`);
+    check(differ.length === 0, `decode() in Chromium gives ${files.length} golden and corpus files the CLI's positions and triangles` +
+      (differ.length ? ` (differ: ${differ.join(', ')})` : ''));
 
     check(errors.length === 0, `no errors in the page${errors.length ? ': ' + errors.join(' | ') : ''}`);
   } finally {
