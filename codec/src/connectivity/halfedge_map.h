@@ -87,20 +87,19 @@ public:
     void rebuildKeeping(Keep keep) {
         std::vector<uint64_t> keptKeys;
         std::vector<uint32_t> keptValues;
-        // Without a branch on what each slot holds (a coin toss): every
-        // entry is written and kept if it should be. keep() is asked of
-        // (0, 0) for an empty slot, so it must answer for any vertex below
-        // the largest it is asked of.
+        // A full() table uses at most 1 / slotsPerEdge of its slots (the
+        // traversal's a quarter), so empty slots, passed over at the cost
+        // of a compare, are most of the scan. Every used entry is written and kept if it
+        // should be, without a branch on keep() (a coin toss).
         keptKeys.resize(size_ + 1);  // kept <= size_: room for the one written last
         keptValues.resize(size_ + 1);
         size_t kept = 0;
         for (size_t i = 0; i < keys_.size(); ++i) {
             const uint64_t key = keys_[i];
-            const bool used = key != kEmptyKey;
-            const uint64_t asked = key & (uint64_t(0) - uint64_t(used));  // 0 if unused, without a branch
+            if (key == kEmptyKey) continue;
             keptKeys[kept] = key;
             keptValues[kept] = values_[i];
-            kept += used & bool(keep(uint32_t(asked >> 32), uint32_t(asked), values_[i]));
+            kept += bool(keep(uint32_t(key >> 32), uint32_t(key), values_[i]));
         }
         keptKeys.resize(kept);
         keptValues.resize(kept);
