@@ -54,16 +54,30 @@ int64_t log2Sixteenths(uint32_t rank) {
 // lengths, keep the score steady on small meshes.
 int64_t rankCost(uint32_t rank) { return log2Sixteenths(rank); }
 
+// The first of `count` limits with d1 * 10000 < d2 * limit, or count, in
+// the integer type Wide.
+template <class Wide>
+int firstLimitAbove(Wide d1, Wide d2, const int* limits, int count) {
+    int bucket = 0;
+    while (bucket < count && !(d1 * 10000 < d2 * limits[bucket])) ++bucket;
+    return bucket;
+}
+
+// Distances below 2^49 (the two nearest candidates within 2^20 grid steps
+// of the prediction: every practical case) keep the products below 2^63
+// (d1 <= d2, factors up to 10000 < 2^14), so 64 bits answer exactly as 128
+// do; a WebAssembly build multiplies 128-bit integers through a call.
+constexpr int64_t kConfidenceIn64Below = int64_t(1) << 49;
+
 int confidenceBucket(const std::vector<RankedVertex>& nearest, bool fine) {
     static const int kFine[kMaxConfidenceBuckets - 1] = {400, 1600, 3600, 5625, 8100};  // 0.2 0.4 0.6 0.75 0.9
     static const int kCoarse[2] = {900, 5625};                                          // 0.3 0.75
     if (nearest.size() < 2) return 0;
-    const __int128 d1 = nearest[0].first, d2 = nearest[1].first;
+    const int64_t d1 = nearest[0].first, d2 = nearest[1].first;
     const int* limits = fine ? kFine : kCoarse;
     const int count = fine ? kMaxConfidenceBuckets - 1 : 2;
-    int bucket = 0;
-    while (bucket < count && !(d1 * 10000 < d2 * limits[bucket])) ++bucket;
-    return bucket;
+    if (d2 < kConfidenceIn64Below) return firstLimitAbove<int64_t>(d1, d2, limits, count);
+    return firstLimitAbove<__int128>(d1, d2, limits, count);
 }
 
 // On regular meshes the distance order is usually right and the angle order

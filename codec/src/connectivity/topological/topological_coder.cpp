@@ -83,6 +83,17 @@ int fanSize(const Traversal& t, uint32_t center, uint32_t o, bool clockwise, int
     return count;
 }
 
+// Whether d / sqrt(uu ww) > 1/2, for a dot product d > 0 of two vectors of
+// squared lengths uu and ww, exactly: 4 d^2 > uu ww. With uu and ww below
+// 2^30 (edges within 2^15 grid steps: every practical case) uu ww < 2^60
+// and d^2 <= uu ww, so 64 bits hold both sides; otherwise 128 bits do
+// (a WebAssembly build multiplies those through a call).
+bool cosineAboveHalf(int64_t d, int64_t uu, int64_t ww) {
+    constexpr int64_t k64BitsBelow = int64_t(1) << 30;
+    if (uu < k64BitsBelow && ww < k64BitsBelow) return 4 * d * d > uu * ww;
+    return 4 * __int128(d) * d > __int128(uu) * ww;
+}
+
 // The class of the side at `at` of edge (at, toward), whose fan ends at `end`.
 int sideClass(const std::vector<int32_t>& grid, uint32_t at, uint32_t toward, uint32_t end) {
     if (end == kNoVertex) return 0;
@@ -93,7 +104,7 @@ int sideClass(const std::vector<int32_t>& grid, uint32_t at, uint32_t toward, ui
     }
     const int64_t d = u[0] * w[0] + u[1] * w[1] + u[2] * w[2];  // differences below 2^21: below 2^44
     const int64_t uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2], ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-    if (d > 0 && 4 * __int128(d) * d > __int128(uu) * ww) return 1;  // cos > 1/2
+    if (d > 0 && cosineAboveHalf(d, uu, ww)) return 1;
     return d > 0 ? 2 : 3;
 }
 

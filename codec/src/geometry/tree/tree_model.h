@@ -289,23 +289,46 @@ inline int magnitudeContext(const CodingState& s, uint32_t self, uint32_t parent
     return std::min(bitLength(uint32_t((uint64_t(previous) + ofParent + 1) / 2)), kMagnitudeContexts - 1);
 }
 
+// Whether surfaceFrame's sums fit in 64 bits for near points from cells
+// of side 2^cellBits: they lie in the 2x2x2 block of cells around `at`
+// (DecodedCells::nearest), each coordinate less than 2^(cellBits + 1)
+// away, so a cross product's components stay below 2^(2 cellBits + 3), the
+// normal's (a sum of at most 6) below 2^(2 cellBits + 6), and a dot product
+// of the two below 2^(4 cellBits + 11): within int64 up to cellBits 13
+// (meshes' cells are far smaller).
+inline bool frameIn64Bits(int cellBits) { return cellBits <= 13; }
+
 // The frame of the surface at `at`, from its near decoded points: the
 // normal is the sum of the cross products of every pair of edges to them,
 // each turned to agree with the sum so far (near points come in distance
 // order, not around the parent). Fewer than two give the identity.
-inline LocalFrame surfaceFrame(GridPoint at, const GridPoint* near, int m) {
+// kIn64Bits: the near points lie within 2^14 of `at` on every axis, so the
+// dot products that turn each cross product take 64 bits exactly
+// (frameIn64Bits); otherwise they take 128 (a WebAssembly build multiplies
+// those through a call).
+template <bool kIn64Bits>
+inline LocalFrame summedSurfaceFrame(GridPoint at, const GridPoint* near, int m) {
     int64_t n[3] = {0, 0, 0};
     for (int i = 0; i < m; ++i) {
         const int64_t ux = int64_t(near[i].x) - at.x, uy = int64_t(near[i].y) - at.y, uz = int64_t(near[i].z) - at.z;
         for (int j = i + 1; j < m; ++j) {
             const int64_t vx = int64_t(near[j].x) - at.x, vy = int64_t(near[j].y) - at.y, vz = int64_t(near[j].z) - at.z;
             int64_t c[3] = {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};  // below 2^43 each
-            const __int128 agreement = __int128(c[0]) * n[0] + __int128(c[1]) * n[1] + __int128(c[2]) * n[2];
-            const int64_t sign = agreement < 0 ? -1 : 1;
+            bool agrees;
+            if constexpr (kIn64Bits) agrees = c[0] * n[0] + c[1] * n[1] + c[2] * n[2] >= 0;
+            else agrees = __int128(c[0]) * n[0] + __int128(c[1]) * n[1] + __int128(c[2]) * n[2] >= 0;
+            const int64_t sign = agrees ? 1 : -1;
             for (int a = 0; a < 3; ++a) n[a] += sign * c[a];  // at most 6 pairs: below 2^46
         }
     }
     return LocalFrame(n[0], n[1], n[2]);
+}
+// Any near points.
+inline LocalFrame surfaceFrame(GridPoint at, const GridPoint* near, int m) { return summedSurfaceFrame<false>(at, near, m); }
+// Near points from DecodedCells of side 2^cellBits: the same frame, in 64
+// bits where they suffice.
+inline LocalFrame surfaceFrame(GridPoint at, const GridPoint* near, int m, int cellBits) {
+    return frameIn64Bits(cellBits) ? summedSurfaceFrame<true>(at, near, m) : summedSurfaceFrame<false>(at, near, m);
 }
 
 // The frame is turned about its normal so that its first axis points
@@ -396,7 +419,7 @@ inline Predictions predict(const CodingState& s, uint32_t self, uint32_t parent)
         p.crowdRadius = int32_t(integerSqrt(uint64_t(p.spacing2)) / 5);
     }
     if (s.framedParent) {
-        p.frame = surfaceFrame(at, near, m);
+        p.frame = surfaceFrame(at, near, m, s.cells.cellBits());
         if (s.tangentSigns) turnAlongTheWalk(s, parent, p.frame);
     }
     return p;

@@ -187,6 +187,39 @@ TEST(TreeModel, TheSurfaceFrameTurnsTheNearPointsNormalUp) {
     EXPECT_EQ(v[2], 9);
 }
 
+TEST(TreeModel, TheSurfaceFrameIn64BitsIsTheSameFrame) {
+    // Near points as far from `at` as cells of side 2^13 allow (2^14 - 1
+    // on every axis), in every sign pattern, and nearer ones: the 64-bit
+    // sums turn every cross product as the 128-bit ones do.
+    ASSERT_TRUE(frameIn64Bits(13));
+    ASSERT_FALSE(frameIn64Bits(14));
+    const int32_t far = (1 << 14) - 1;
+    const GridPoint at{1 << 20, 1 << 20, 1 << 20};
+    uint32_t state = 12345;
+    auto offset = [&](int32_t reach) {
+        state = state * 1664525u + 1013904223u;
+        const int32_t r = int32_t(state >> 8) % (2 * reach + 1) - reach;
+        return (state & 1) != 0 ? r : (r < 0 ? -reach : reach);  // half at the limit
+    };
+    for (int trial = 0; trial < 2000; ++trial) {
+        const int32_t reach = trial % 2 == 0 ? far : 1 + trial % 300;
+        GridPoint near[kNearest];
+        for (GridPoint& q : near) q = {at.x + offset(reach), at.y + offset(reach), at.z + offset(reach)};
+        for (int m = 0; m <= kNearest; ++m) {
+            const LocalFrame wide = surfaceFrame(at, near, m), narrow = surfaceFrame(at, near, m, 13);
+            static const int64_t kProbes[3][3] = {{1000, 0, 0}, {0, 1000, 0}, {0, 0, 1000}};
+            for (const auto& probe : kProbes) {
+                int64_t a[3] = {probe[0], probe[1], probe[2]}, b[3] = {probe[0], probe[1], probe[2]};
+                wide.toFrame(a);
+                narrow.toFrame(b);
+                ASSERT_EQ(a[0], b[0]);
+                ASSERT_EQ(a[1], b[1]);
+                ASSERT_EQ(a[2], b[2]);
+            }
+        }
+    }
+}
+
 TEST(TreeModel, RoughBitsAndTheFramesAdvantage) {
     EXPECT_EQ(roughBits(GridPoint{0, 0, 0}), 0);
     EXPECT_EQ(roughBits(GridPoint{1, 0, 0}), 2);     // length 1 and a sign
