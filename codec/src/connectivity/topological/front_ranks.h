@@ -24,29 +24,47 @@ namespace drm {
 
 using RankKey = std::pair<int64_t, uint32_t>;  // (squared distance, id)
 
-// The front: ids[k] at positions[3k .. 3k + 2].
+// The front: ids[k] at grid point (xs[k], ys[k], zs[k]), the coordinates
+// as doubles (exact: below 2^21), one array an axis, so that distances are
+// worked out several at once.
 struct FrontView {
-    const int32_t* positions = nullptr;
+    const double* xs = nullptr;
+    const double* ys = nullptr;
+    const double* zs = nullptr;
     const uint32_t* ids = nullptr;
     size_t count = 0;
 };
 
 constexpr int64_t kAnyDistance = std::numeric_limits<int64_t>::max();
 
+// Front vertices whose distances are worked out at once, before any is read.
+constexpr size_t kFrontBlock = 64;
+
 // Calls visit(key) for each front vertex but skipA and skipB whose squared
-// distance to p is at most *within (which visit may lower as it goes): most
-// vertices are passed over on their distance alone.
+// distance to p is at most *within (which visit may lower as it goes), in
+// front order: most vertices are passed over on their distance alone. The
+// distances of a block of vertices are taken first, in doubles, which
+// hold them exactly (differences below 2^23, their squares' sum below
+// 2^48) and which a compiler takes two or more at a time.
 template <class Visit>
 void forEachFrontKey(const FrontView& front, const int64_t p[3], uint32_t skipA, uint32_t skipB, const int64_t* within,
                      Visit visit) {
-    const int32_t* at = front.positions;
-    for (size_t k = 0; k < front.count; ++k, at += 3) {
-        const int64_t dx = at[0] - p[0], dy = at[1] - p[1], dz = at[2] - p[2];
-        const int64_t d2 = dx * dx + dy * dy + dz * dz;
-        if (d2 > *within) continue;
-        const uint32_t v = front.ids[k];
-        if (v == skipA || v == skipB) continue;
-        visit(RankKey(d2, v));
+    const double px = double(p[0]), py = double(p[1]), pz = double(p[2]);
+    double d2s[kFrontBlock];
+    for (size_t first = 0; first < front.count; first += kFrontBlock) {
+        const size_t n = std::min(kFrontBlock, front.count - first);
+        const double *xs = front.xs + first, *ys = front.ys + first, *zs = front.zs + first;
+        for (size_t i = 0; i < n; ++i) {
+            const double dx = xs[i] - px, dy = ys[i] - py, dz = zs[i] - pz;
+            d2s[i] = dx * dx + dy * dy + dz * dz;
+        }
+        for (size_t i = 0; i < n; ++i) {
+            const int64_t d2 = int64_t(d2s[i]);
+            if (d2 > *within) continue;
+            const uint32_t v = front.ids[first + i];
+            if (v == skipA || v == skipB) continue;
+            visit(RankKey(d2, v));
+        }
     }
 }
 

@@ -224,24 +224,27 @@ struct WalkState {
     WalkProgress progress;
     Models models;
 
-    // The front's positions beside it (frontAt: 3 per slot), so that the
-    // pass over it reads one array in order (front_ranks.h).
-    std::vector<int32_t> frontAt;
+    // The front's positions beside it, an array per axis (frontAt[axis],
+    // by slot), so that the pass over it reads them in order, several at
+    // once (front_ranks.h).
+    std::vector<double> frontAt[3];
     void enter(uint32_t v) {
         room(size_t(v) + 1);
         slotOf[v] = uint32_t(front.size());
         front.push_back(v);
-        frontAt.insert(frontAt.end(), grid.begin() + 3 * std::ptrdiff_t(v), grid.begin() + 3 * std::ptrdiff_t(v) + 3);
+        for (int k = 0; k < 3; ++k) frontAt[k].push_back(double(component(grid, v, k)));
     }
     void leaveIfCulled(uint32_t v) {
         if (slotOf[v] == kNoVertex || !traversal.isCulled(v)) return;
         const size_t slot = slotOf[v], lastSlot = front.size() - 1;
         const uint32_t last = front[lastSlot];
         front[slot] = last;
-        for (size_t k = 0; k < 3; ++k) frontAt[3 * slot + k] = frontAt[3 * lastSlot + k];
+        for (std::vector<double>& axis : frontAt) {
+            axis[slot] = axis[lastSlot];
+            axis.pop_back();
+        }
         slotOf[last] = uint32_t(slot);
         front.pop_back();
-        frontAt.resize(3 * lastSlot);
         slotOf[v] = kNoVertex;
     }
 };
@@ -358,7 +361,9 @@ void reportProgress(WalkState& st) {
 }
 
 // The front as front_ranks.h reads it.
-FrontView frontOf(const WalkState& st) { return FrontView{st.frontAt.data(), st.front.data(), st.front.size()}; }
+FrontView frontOf(const WalkState& st) {
+    return FrontView{st.frontAt[0].data(), st.frontAt[1].data(), st.frontAt[2].data(), st.front.data(), st.front.size()};
+}
 
 // The mesh being encoded: the true apex of each edge, and the input vertex
 // behind each id. The decoder passes none.

@@ -21,7 +21,7 @@ TEST(FrontRanks, AgreeWithSortingEveryAdmissibleCandidate) {
     std::vector<RankKey> scratch;
     size_t fallbacks = 0, fastPaths = 0;
     for (int round = 0; round < 300; ++round) {
-        const size_t n = 1 + random() % (round % 3 == 0 ? 400 : 60);
+        const size_t n = 1 + random() % (round % 3 == 0 ? 400 : 60);  // blocks of kFrontBlock, and a part of one
         const int spread = 1 + int(random() % (round % 2 == 0 ? 3 : 1000));  // 1..3: a crowded lattice, many ties
         std::vector<int32_t> positions(3 * n);
         std::vector<uint32_t> ids(n);
@@ -47,7 +47,10 @@ TEST(FrontRanks, AgreeWithSortingEveryAdmissibleCandidate) {
             truth.emplace_back(d2, ids[k]);
         }
         std::sort(truth.begin(), truth.end());
-        const FrontView front{positions.data(), ids.data(), n};
+        std::vector<double> axes[3];
+        for (size_t k = 0; k < n; ++k)
+            for (int a = 0; a < 3; ++a) axes[a].push_back(double(positions[3 * k + size_t(a)]));
+        const FrontView front{axes[0].data(), axes[1].data(), axes[2].data(), ids.data(), n};
         for (uint32_t rank = 0; rank < truth.size() + 3; ++rank) {
             const uint32_t found = frontVertexOfRank(front, p, skipA, skipB, rank, admissible, scratch);
             ASSERT_EQ(found, rank < truth.size() ? truth[rank].second : kNoVertex) << "round " << round << " rank " << rank;
