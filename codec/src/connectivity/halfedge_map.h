@@ -103,7 +103,7 @@ public:
         }
         keptKeys.resize(kept);
         keptValues.resize(kept);
-        const size_t capacity = std::max<size_t>(16, keptKeys.size() * 4 * slotsPerEdge_);
+        const size_t capacity = std::max<size_t>(kLeastRebuiltSlots, keptKeys.size() * 4 * slotsPerEdge_);
         std::vector<uint64_t>().swap(keys_);  // freed before the new table is made
         std::vector<uint32_t>().swap(values_);
         setCapacity(capacity);
@@ -117,6 +117,11 @@ public:
     }
 
 private:
+    // A rebuilt table has at least this many slots: a table that keeps a
+    // handful of entries (the traversal's fan pieces beyond each vertex's
+    // first: a few at a time) would otherwise fill again, and be rebuilt,
+    // every few inserts.
+    static constexpr size_t kLeastRebuiltSlots = 256;
     // (a, b) with a == b never occurs (faces with a repeated index are
     // refused), so the packed self-loop of vertex 2^32-1 is a safe marker.
     static constexpr uint64_t kEmptyKey = ~uint64_t(0);
