@@ -64,7 +64,7 @@ int firstLimitAbove(Wide d1, Wide d2, const int* limits, int count) {
 }
 
 // Distances below 2^49 (the two nearest candidates within 2^20 grid steps
-// of the prediction: every practical case) keep the products below 2^63
+// of the prediction, as on nearly every edge) keep the products below 2^63
 // (d1 <= d2, factors up to 10000 < 2^14), so 64 bits answer exactly as 128
 // do; a WebAssembly build multiplies 128-bit integers through a call.
 constexpr int64_t kConfidenceIn64Below = int64_t(1) << 49;

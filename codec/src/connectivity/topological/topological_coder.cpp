@@ -85,7 +85,7 @@ int fanSize(const Traversal& t, uint32_t center, uint32_t o, bool clockwise, int
 
 // Whether d / sqrt(uu ww) > 1/2, for a dot product d > 0 of two vectors of
 // squared lengths uu and ww, exactly: 4 d^2 > uu ww. With uu and ww below
-// 2^30 (edges within 2^15 grid steps: every practical case) uu ww < 2^60
+// 2^30 (edges shorter than 2^15 grid steps) uu ww < 2^60
 // and d^2 <= uu ww, so 64 bits hold both sides; otherwise 128 bits do
 // (a WebAssembly build multiplies those through a call).
 bool cosineAboveHalf(int64_t d, int64_t uu, int64_t ww) {

@@ -294,8 +294,8 @@ inline int magnitudeContext(const CodingState& s, uint32_t self, uint32_t parent
 // (DecodedCells::nearest), each coordinate less than 2^(cellBits + 1)
 // away, so a cross product's components stay below 2^(2 cellBits + 3), the
 // normal's (a sum of at most 6) below 2^(2 cellBits + 6), and a dot product
-// of the two below 2^(4 cellBits + 11): within int64 up to cellBits 13
-// (meshes' cells are far smaller).
+// of the two below 2^(4 cellBits + 11): within int64 up to cellBits 13.
+// Wider cells (a coarse mesh on a fine grid) take 128 bits.
 inline bool frameIn64Bits(int cellBits) { return cellBits <= 13; }
 
 // The frame of the surface at `at`, from its near decoded points: the
