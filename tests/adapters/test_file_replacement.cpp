@@ -8,6 +8,7 @@
 // non-root user skip themselves, saying so, when run as root.
 #include <drmcodec/drmcodec.h>
 #include <drm_vcg/file_io.h>
+#include <drm_vcg/mesh_io.h>
 
 #include <gtest/gtest.h>
 
@@ -175,4 +176,36 @@ TEST(FileReplacement, ReportsAFolderTheUserMayNotWrite) {
     }
     EXPECT_EQ(readText(dir.file("closed/mesh.drm")), "old");
     ASSERT_EQ(::chmod(dir.file("closed").c_str(), 0755), 0);  // so ScratchDir can remove it
+}
+
+// The OBJ's material library is a file the user did not name: a link in
+// its place that leads out of the OBJ's folder is refused, and neither the
+// link's target nor the OBJ is written; a link to a file beside it is
+// written through, as a named file's link is.
+TEST(FileReplacement, RefusesAMaterialLibraryLinkLeadingOutOfTheFolder) {
+    ScratchDir dir;
+    ASSERT_EQ(::mkdir(dir.file("out").c_str(), 0755), 0);
+    writeText(dir.file("victim.txt"), "precious");
+    ASSERT_EQ(::symlink(dir.file("victim.txt").c_str(), dir.file("out/mesh.mtl").c_str()), 0);
+    drm::Mesh mesh;
+    mesh.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    mesh.triangles = {0, 1, 2};
+    mesh.faceTexture = {0};
+    mesh.textures = {"stone.png"};
+    mesh.cornerTexCoords = {0, 0, 1, 0, 0, 1};
+    try {
+        drm::vcgio::saveObj(dir.file("out/mesh.obj"), mesh);
+        ADD_FAILURE() << "the library was written through a link leading out of the folder";
+    } catch (const drm::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("outside the OBJ's folder"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(readText(dir.file("victim.txt")), "precious");
+    EXPECT_FALSE(::access(dir.file("out/mesh.obj").c_str(), F_OK) == 0) << "the OBJ was written without its library";
+
+    ASSERT_EQ(::unlink(dir.file("out/mesh.mtl").c_str()), 0);
+    writeText(dir.file("out/library.mtl"), "old");
+    ASSERT_EQ(::symlink("library.mtl", dir.file("out/mesh.mtl").c_str()), 0);
+    drm::vcgio::saveObj(dir.file("out/mesh.obj"), mesh);
+    EXPECT_TRUE(isLink(dir.file("out/mesh.mtl")));
+    EXPECT_NE(readText(dir.file("out/library.mtl")).find("map_Kd stone.png"), std::string::npos);
 }

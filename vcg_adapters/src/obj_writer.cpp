@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -21,6 +22,7 @@ namespace drm {
 namespace vcgio {
 
 namespace {
+
 
 // Nine significant digits give every float back exactly.
 void appendFloat(std::string& out, float value) {
@@ -53,6 +55,25 @@ std::string stemOf(const std::string& path) {
     const std::string name = baseName(path);
     const size_t dot = name.find_last_of('.');
     return (dot == std::string::npos || dot == 0) ? name : name.substr(0, dot);
+}
+
+// The material library is a file the user did not name: saveObj writes it
+// beside the OBJ, and so through a link only to a file in the OBJ's own
+// folder, as the reader reads one (mesh_io.cpp, libraryInsideFolder). A
+// link planted there must not make drm read or replace a file elsewhere.
+void refuseLibraryLinkOutside(const std::string& objPath, const std::string& libraryPath) {
+    struct stat info;
+    if (::lstat(libraryPath.c_str(), &info) != 0 || !S_ISLNK(info.st_mode)) return;
+    const std::string folder = folderOf(objPath).empty() ? "." : folderOf(objPath);
+    char* folderReal = ::realpath(folder.c_str(), nullptr);
+    char* target = ::realpath(libraryPath.c_str(), nullptr);
+    std::string folderText = folderReal ? folderReal : "", targetText = target ? target : "";
+    std::free(folderReal);
+    std::free(target);
+    if (folderText != "/") folderText += "/";
+    if (targetText.empty() || targetText.compare(0, folderText.size(), folderText) != 0)
+        throw Error(ErrorKind::Io, "cannot write " + libraryPath + ": it is a link to a file outside the OBJ's folder "
+                    "(the material library is written only beside the OBJ); nothing written");
 }
 
 // Indices of distinct values (compared bit for bit), in order of first use.
@@ -234,6 +255,7 @@ std::vector<std::string> saveObj(const std::string& path, const drm::Mesh& mesh)
     // neither file is touched. A library already holding the text is left.
     std::vector<std::pair<std::string, std::vector<uint8_t>>> files;
     files.emplace_back(path, std::vector<uint8_t>(out.begin(), out.end()));
+    if (haveText) refuseLibraryLinkOutside(path, libraryPath);
     if (haveText && !fileHoldsText(libraryPath, libraryText))
         files.emplace_back(libraryPath, std::vector<uint8_t>(libraryText.begin(), libraryText.end()));
     writeFilesAtomically(files);
