@@ -156,5 +156,20 @@ TEST(InputErrors, IndexOutOfRangeWithEachAttributeKind) {
                 }
 }
 
+// A face's material or texture must be one the mesh names (where it names
+// any): the error names the face.
+TEST(InputErrors, AMaterialOrTextureTheMeshDoesNotNameIsRefused) {
+    drm::Mesh mesh = drm_test::tetrahedron();
+    mesh.faceMaterial = {0, 0, 0, 7};
+    mesh.materials = {"stone"};
+    EXPECT_TRUE(refusedNaming(mesh, {"face 3 uses material 7, but the mesh names only 1"}));
+    mesh.materials.clear();  // indices without names are kept as they are
+    EXPECT_NO_THROW(drm::encode(mesh));
+    mesh = drm_test::tetrahedron();
+    mesh.faceTexture = {0, 1, 0, 0};
+    mesh.textures = {"a.png"};
+    EXPECT_TRUE(refusedNaming(mesh, {"face 1 uses texture 1, but the mesh names only 1"}));
+}
+
 }  // namespace
 }  // namespace adversarial

@@ -42,6 +42,17 @@ void checkSize(size_t have, size_t per, size_t count, const char* array, const c
                     std::to_string(per) + " per " + unit + " (" + std::to_string(per * count) + ")");
 }
 
+// A face's material or texture index names an entry of the mesh's list of
+// names, where the mesh has one (without names, the indices are kept as
+// they are): a writer could not name a material the list lacks.
+void checkNameIndices(const std::vector<uint32_t>& indices, const std::vector<std::string>& names, const char* what) {
+    if (names.empty()) return;
+    for (size_t f = 0; f < indices.size(); ++f)
+        if (indices[f] >= names.size())
+            throw Error(ErrorKind::InvalidInput, "face " + std::to_string(f) + " uses " + what + " " + std::to_string(indices[f]) +
+                        ", but the mesh names only " + std::to_string(names.size()) + " (0.." + std::to_string(names.size() - 1) + ")");
+}
+
 std::string cornerName(size_t corner) {
     return "corner " + std::to_string(corner % 3) + " of face " + std::to_string(corner / 3);
 }
@@ -298,6 +309,8 @@ void checkAttributes(const Mesh& m, const EncodeOptions& options) {
     checkSize(m.faceQuality.size(), 1, F, "faceQuality", "face");
     checkSize(m.faceMaterial.size(), 1, F, "faceMaterial", "face");
     checkSize(m.faceTexture.size(), 1, F, "faceTexture", "face");
+    checkNameIndices(m.faceMaterial, m.materials, "material");
+    checkNameIndices(m.faceTexture, m.textures, "texture");
     if (options.normalBits < kMinNormalBits || options.normalBits > kMaxNormalBits)
         throw Error(ErrorKind::InvalidInput, "normal bits must be between " + std::to_string(kMinNormalBits) + " and " +
                     std::to_string(kMaxNormalBits) + ", not " + std::to_string(options.normalBits));
