@@ -216,13 +216,12 @@ public:
                 if (PyErr_CheckSignals() != 0) throw py::error_already_set();
                 if (callback_.is_none()) return true;
                 const py::object answer = callback_(fraction, stage);
-                return answer.is_none() || answer.cast<bool>();
+                if (answer.is_none()) return true;
+                const int go = PyObject_IsTrue(answer.ptr());  // Python's truth, as `if answer:` takes it
+                if (go < 0) throw py::error_already_set();
+                return go == 1;
             } catch (py::error_already_set& e) {
                 pending_ = std::make_unique<py::error_already_set>(std::move(e));
-                return false;
-            } catch (const std::exception& e) {  // an answer that is not a bool
-                PyErr_SetString(PyExc_TypeError, (std::string("the progress callback's answer: ") + e.what()).c_str());
-                pending_ = std::make_unique<py::error_already_set>();
                 return false;
             }
         };
@@ -345,7 +344,13 @@ PYBIND11_MODULE(_drm, m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const drm::Error& e) {
-            PyErr_SetString(gErrorClasses[int(e.kind())], e.what());
+            // A message may quote a file name that is not UTF-8: its bytes
+            // come back as Python's os.fsdecode would give them.
+            const std::string message = e.what();
+            PyObject* text = PyUnicode_DecodeUTF8(message.data(), py::ssize_t(message.size()), "surrogateescape");
+            if (!text) return;
+            PyErr_SetObject(gErrorClasses[int(e.kind())], text);
+            Py_DECREF(text);
         }
     });
 
@@ -384,7 +389,8 @@ PYBIND11_MODULE(_drm, m) {
         py::arg("data"));
     m.def(
         "load",
-        [](const std::string& path, const py::object& progress) {
+        [](const py::bytes& pathBytes, const py::object& progress) {
+            const std::string path = pathBytes;
             py::dict out;
             if (endsWithDrm(path)) {
                 std::vector<uint8_t> bytes;
@@ -416,8 +422,9 @@ PYBIND11_MODULE(_drm, m) {
         py::arg("path"), py::arg("progress"));
     m.def(
         "save",
-        [](const std::string& path, const py::handle& vertices, const py::handle& faces, const py::dict& attributes,
+        [](const py::bytes& pathBytes, const py::handle& vertices, const py::handle& faces, const py::dict& attributes,
            const py::dict& options, const py::object& progress) {
+            const std::string path = pathBytes;
             const drm::Mesh mesh = meshOf(vertices, faces, attributes);
             py::dict out;
             if (endsWithDrm(path)) {
@@ -453,7 +460,8 @@ PYBIND11_MODULE(_drm, m) {
         py::arg("progress"));
     m.def(
         "encode_file",
-        [](const std::string& input, const std::string& output, const py::dict& options, const py::object& progress) {
+        [](const py::bytes& inputBytes, const py::bytes& outputBytes, const py::dict& options, const py::object& progress) {
+            const std::string input = inputBytes, output = outputBytes;
             // What `drm encode INPUT OUTPUT` does (tools/cmd_encode.cpp),
             // with the same defaults: the same file, byte for byte.
             drm::EncodeOptions o = encodeOptionsOf(options);

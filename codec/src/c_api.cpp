@@ -3,6 +3,7 @@
 #include "drmcodec/drmcodec_c.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <new>
 #include <string>
 
@@ -167,8 +168,11 @@ drmcodec_encoded* drmcodec_encode(const float* positions, size_t vertexCount, co
     capture(result, [&] {
         if ((!positions && vertexCount) || (!triangles && faceCount))
             throw drm::Error(drm::ErrorKind::InvalidInput, "no data: a null array with a non-zero count");
-        if (vertexCount > SIZE_MAX / 12 || faceCount > SIZE_MAX / 12)
-            throw drm::Error(drm::ErrorKind::InvalidInput, "the mesh is too large");
+        // Beyond 2^32 vertices or faces no index can name them all; the
+        // codec's own limits are lower still and give their own message.
+        if (vertexCount > UINT32_MAX || faceCount > UINT32_MAX)
+            throw drm::Error(drm::ErrorKind::InvalidInput, "the mesh is too large: " + std::to_string(vertexCount) +
+                             " vertices and " + std::to_string(faceCount) + " faces (at most 2^32 of each)");
         drm::Mesh mesh;
         mesh.positions.assign(positions, positions + 3 * vertexCount);
         mesh.triangles.assign(triangles, triangles + 3 * faceCount);

@@ -16,10 +16,13 @@ InvalidTypeError is a TypeError, OutOfRangeError an OverflowError,
 InvalidInputError, CorruptError and UnsupportedError ValueErrors, IoError
 an OSError, CancelledError and InternalError RuntimeErrors.
 
-Long calls take progress=callable(fraction, stage): it is called now and
-then with the fraction done (0..1) and a stage name, and returning False
-cancels the call (CancelledError). Ctrl+C cancels too. The codec runs
-without the GIL, so threads encode or decode in parallel.
+Encoding and decoding take progress=callable(fraction, stage) (also
+save() to .drm, load() of a .drm file and encode_file()): it is called now
+and then with the fraction done (0..1, never falling) and a stage name, and
+an answer that is false but not None (False, 0) cancels the call
+(CancelledError). Ctrl+C cancels too. Reading and writing PLY, OBJ, OFF and
+STL report no progress. The codec runs without the GIL, so threads encode
+or decode in parallel.
 """
 from __future__ import annotations
 
@@ -101,7 +104,7 @@ def decode(data: Any, *, attributes: bool = False, threads: int = 0,
     """(vertices, faces) of a .drm file given as any bytes-like object;
     with attributes=True, (vertices, faces, attribute dict)."""
     d = decode_full(data, threads=threads, progress=progress)
-    if attributes:
+    if _checks.bool_option(attributes, "attributes"):
         return d["vertices"], d["faces"], d["attributes"]
     return d["vertices"], d["faces"]
 
@@ -119,11 +122,9 @@ def info(data: Any, *, ranks: bool = False) -> Dict[str, Any]:
     --json`, and format_version), read without decoding; boundary_edges,
     welded_vertices and rank_histogram are None unless ranks=True, which
     decodes the file to count them."""
-    if not isinstance(ranks, bool):
-        raise InvalidTypeError(f"ranks must be True or False, not {type(ranks).__name__}")
     view = _checks.buffer(data)
     header = _drm.info(view)
-    if not ranks:
+    if not _checks.bool_option(ranks, "ranks"):
         return header
     stats = decode_full(view)["stats"]
     stats["format_version"] = header["format_version"]

@@ -44,6 +44,12 @@ def _array(value: Any, name: str, dtype: type, columns: int) -> np.ndarray:
         raise InvalidInputError(f"{name} must be a regular array of shape (n, {columns}): {e}") from None
     kind = a.dtype.kind
     integral = dtype is not np.float32
+    if kind == "O" and a.size and all(isinstance(x, int) and not isinstance(x, bool) for x in a.flat):
+        # Python ints beyond 64 bits: numpy keeps them as objects.
+        flat = list(a.flat)
+        where = max(range(len(flat)), key=lambda i: abs(flat[i]))
+        target = "uint32" if dtype is np.uint32 else "uint8" if dtype is np.uint8 else "float32"
+        raise OutOfRangeError(f"{name}: row {where // max(columns, 1)} holds {flat[where]}, beyond the range of {target}")
     if integral and kind not in "iu":
         what = "integers" if dtype is np.uint32 else "integers 0..255"
         raise InvalidTypeError(f"{name} must hold {what}, not {a.dtype} values")
@@ -87,6 +93,17 @@ ATTRIBUTE_ARRAYS: Dict[str, Tuple[type, int]] = {
 }
 
 
+def _text(value: str, name: str) -> str:
+    """value, if it is text a file can hold: UTF-8, no NUL."""
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError:
+        raise InvalidInputError(f"{name} is not valid Unicode text (it holds a lone surrogate)") from None
+    if "\0" in value:
+        raise InvalidInputError(f"{name} holds a NUL character")
+    return value
+
+
 def _names(value: Any, name: str) -> list:
     if isinstance(value, (str, bytes)) or not hasattr(value, "__iter__"):
         raise InvalidTypeError(f"{name} must be a list of str, not {type(value).__name__}")
@@ -94,6 +111,7 @@ def _names(value: Any, name: str) -> list:
     for i, n in enumerate(names):
         if not isinstance(n, str):
             raise InvalidTypeError(f"{name}[{i}] must be a str, not {type(n).__name__}")
+        _text(n, f"{name}[{i}]")
     return names
 
 
@@ -106,7 +124,7 @@ def _metadata(value: Any) -> list:
     for i, pair in enumerate(value):
         if not isinstance(pair, (tuple, list)) or len(pair) != 2 or not all(isinstance(x, str) for x in pair):
             raise InvalidTypeError(f"metadata[{i}] must be a (name, text) pair of str")
-        pairs.append((pair[0], pair[1]))
+        pairs.append((_text(pair[0], f"metadata[{i}] name"), _text(pair[1], f"metadata[{i}] text")))
     return pairs
 
 
@@ -144,6 +162,10 @@ def _int(value: Any, name: str, low: int, high: int) -> int:
     return value
 
 
+def bool_option(value: Any, name: str) -> bool:
+    return _bool(value, name)
+
+
 def _bool(value: Any, name: str) -> bool:
     if not isinstance(value, (bool, np.bool_)):
         raise InvalidTypeError(f"{name} must be True or False, not {type(value).__name__}")
@@ -153,7 +175,7 @@ def _bool(value: Any, name: str) -> bool:
 def _str(value: Any, name: str) -> str:
     if not isinstance(value, str):
         raise InvalidTypeError(f"{name} must be a str, not {type(value).__name__}")
-    return value
+    return _text(value, name)
 
 
 _INT32_MAX = 2**31 - 1
@@ -195,7 +217,9 @@ def progress_callback(progress: Any) -> Any:
     return progress
 
 
-def path(value: Any, name: str = "path") -> str:
+def path(value: Any, name: str = "path") -> bytes:
+    """A file name as the extension takes it: the bytes os.fsencode gives,
+    so that any name the file system holds works, UTF-8 or not."""
     if isinstance(value, bytes) or not isinstance(value, (str, os.PathLike)):
         raise InvalidTypeError(f"{name} must be a str or os.PathLike, not {type(value).__name__}")
     text = os.fspath(value)
@@ -203,7 +227,7 @@ def path(value: Any, name: str = "path") -> str:
         raise InvalidTypeError(f"{name} must name the file as str, not {type(text).__name__}")
     if "\0" in text:
         raise InvalidInputError(f"{name} holds a NUL character")
-    return text
+    return os.fsencode(text)
 
 
 def buffer(data: Any, name: str = "data") -> memoryview:
@@ -216,7 +240,7 @@ def buffer(data: Any, name: str = "data") -> memoryview:
     except TypeError:
         raise InvalidTypeError(f"{name} must be bytes-like, not {type(data).__name__}") from None
     if not view.c_contiguous:
-        raise InvalidInputError(f"{name} must be contiguous in memory")
+        raise InvalidInputError(f"{name} must be C-contiguous in memory (bytes(data) makes a copy that is)")
     return view
 
 
@@ -229,4 +253,4 @@ def threads(value: Any) -> int:
 
 
 __all__ = ["InvalidTypeError", "OutOfRangeError", "mesh_arrays", "encode_options", "progress_callback", "path",
-           "buffer", "threads", "int_option", "ATTRIBUTE_ARRAYS"]
+           "buffer", "threads", "int_option", "bool_option", "ATTRIBUTE_ARRAYS"]

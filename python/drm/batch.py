@@ -12,8 +12,9 @@ sees (a shared file system) under the same names.
 The manifest (DIR/drm-manifest.jsonl unless --manifest says otherwise) gets
 one JSON line as each file finishes: input, output, input and output
 bytes, bits per vertex, seconds, the worker, and the error if it failed. A
-second run skips every input the manifest records as done whose input and
-output are as they were then, so an interrupted run resumes. Failures are
+second run skips every input the manifest records as done, with the same
+drm version and options, whose input and output are as they were then, so
+an interrupted run resumes. Failures are
 listed at the end and the exit code is 1.
 
 Without --scheduler, a local cluster of --workers processes (default: the
@@ -51,7 +52,14 @@ def mesh_inputs(paths: Iterable[str]) -> List[str]:
             files.append(os.path.abspath(path))
         else:
             raise SystemExit(f"drm.batch: {path}: no such file or folder")
-    return files
+    unique: List[str] = []
+    seen = set()
+    for path in files:  # a file named twice (or through a link) is coded once
+        real = os.path.realpath(path)
+        if real not in seen:
+            seen.add(real)
+            unique.append(path)
+    return unique
 
 
 def output_paths(inputs: List[str], out_dir: str) -> List[str]:
@@ -112,25 +120,49 @@ def encode_one(input: str, output: str, options: Dict[str, Any], version: str) -
     return record
 
 
-def done_before(manifest: str) -> Dict[Tuple[str, str], Dict[str, Any]]:
-    """The manifest's successful records whose files are unchanged since."""
+def _pair(value: Any) -> Optional[Tuple[int, int]]:
+    if isinstance(value, list) and len(value) == 2 and all(isinstance(x, int) for x in value):
+        return value[0], value[1]
+    return None
+
+
+def done_before(manifest: str, settings: Dict[str, Any]) -> Dict[Tuple[str, str], Dict[str, Any]]:
+    """The manifest's successful records, made with these settings (drm's
+    version and the encoding options), whose files are unchanged since.
+    A line that is not such a record (cut short by an interrupted run, or
+    damaged) is passed over."""
     done: Dict[Tuple[str, str], Dict[str, Any]] = {}
     if not os.path.exists(manifest):
         return done
-    with open(manifest, encoding="utf-8") as f:
+    with open(manifest, encoding="utf-8", errors="replace") as f:
         for line in f:
             try:
                 record = json.loads(line)
             except ValueError:
-                continue  # a line cut short by an interrupted run
-            key = (record.get("input"), record.get("output"))
-            if record.get("error") is None and record.get("input_signature") and record.get("output_signature") \
-                    and _signature(key[0]) == tuple(record["input_signature"]) \
-                    and _signature(key[1]) == tuple(record["output_signature"]):
+                continue
+            if not isinstance(record, dict) or not isinstance(record.get("input"), str) \
+                    or not isinstance(record.get("output"), str):
+                continue
+            key = (record["input"], record["output"])
+            signatures = _pair(record.get("input_signature")), _pair(record.get("output_signature"))
+            if record.get("error") is None and record.get("settings") == settings and all(signatures) \
+                    and _signature(key[0]) == signatures[0] and _signature(key[1]) == signatures[1]:
                 done[key] = record
             else:
                 done.pop(key, None)
     return done
+
+
+def _ends_with_newline(path: str) -> bool:
+    try:
+        with open(path, "rb") as f:
+            f.seek(0, os.SEEK_END)
+            if f.tell() == 0:
+                return True
+            f.seek(-1, os.SEEK_END)
+            return f.read(1) == b"\n"
+    except FileNotFoundError:
+        return True
 
 
 def encoding_options(args: argparse.Namespace) -> Dict[str, Any]:
@@ -227,11 +259,12 @@ def main(argv: Optional[List[str]] = None) -> int:
         return 2
     os.makedirs(out_dir, exist_ok=True)
     manifest = os.path.abspath(args.manifest or os.path.join(out_dir, MANIFEST_NAME))
-    done = done_before(manifest)
+    settings = {"drm": drm.__version__, "options": options}
+    done = done_before(manifest, settings)
     todo = [(i, o) for i, o in zip(inputs, outputs) if (i, o) not in done]
     skipped = len(inputs) - len(todo)
-    print(f"drm.batch: {len(inputs)} files, {skipped} done before (manifest {manifest}), {len(todo)} to encode",
-          flush=True)
+    print(f"drm.batch: {len(inputs)} file{'' if len(inputs) == 1 else 's'}, {skipped} done before "
+          f"(manifest {manifest}), {len(todo)} to encode", flush=True)
 
     failures: List[Dict[str, Any]] = []
     bytes_in = bytes_out = 0
@@ -245,13 +278,17 @@ def main(argv: Optional[List[str]] = None) -> int:
             print(f"drm.batch: {workers} workers at {client.scheduler.address}", flush=True)
             futures = {client.submit(encode_one, i, o, options, drm.__version__, pure=False, key=f"drm-encode-{n}"): (i, o)
                        for n, (i, o) in enumerate(todo)}
+            cut_short = not _ends_with_newline(manifest)
             with open(manifest, "a", encoding="utf-8") as log:
+                if cut_short:
+                    log.write("\n")  # an interrupted run's last line stays apart from the next record
                 for count, future in enumerate(as_completed(futures), 1):
                     try:
                         record = future.result()
                     except Exception as e:  # the worker died or the task could not run
                         i, o = futures[future]
                         record = {"input": i, "output": o, "error": f"task failed: {e}"}
+                    record["settings"] = settings
                     log.write(json.dumps(record) + "\n")
                     log.flush()
                     os.fsync(log.fileno())

@@ -54,11 +54,11 @@ def test_an_index_out_of_range_is_refused_naming_the_face(kind, bad, weld):
     assert "face 3" in str(caught.value) and f"refers to vertex {bad}" in str(caught.value)
 
 
-@pytest.mark.parametrize("bad", [2**32, 2**40, -1])
+@pytest.mark.parametrize("bad", [2**32, 2**40, -1, 2**64, -2**70])
 def test_an_index_beyond_uint32_is_refused_not_wrapped(bad):
     vertices, faces = tetrahedron()
-    faces = faces.astype(np.int64)
-    faces[1, 2] = bad
+    faces = faces.tolist()  # Python ints: numpy keeps those beyond 64 bits as objects
+    faces[1][2] = bad
     with pytest.raises(drm.OutOfRangeError) as caught:
         drm.encode(vertices, faces)
     assert isinstance(caught.value, OverflowError) and isinstance(caught.value, drm.Error)
@@ -200,3 +200,34 @@ def test_threads_encode_at_once_and_agree(torus):
     for t in threads:
         t.join()
     assert results == [expected] * 4
+
+
+def test_text_that_is_not_unicode_is_refused():
+    vertices, faces = tetrahedron()
+    with pytest.raises(drm.InvalidInputError) as caught:
+        drm.encode(vertices, faces, predictor="\udc80")
+    assert isinstance(caught.value, ValueError)
+    with pytest.raises(drm.InvalidInputError):
+        drm.encode(vertices, faces, attributes={"face_material": np.zeros(4, np.uint32), "materials": ["a\udc80"]})
+    with pytest.raises(drm.InvalidInputError):
+        drm.encode(vertices, faces, attributes={"metadata": [("obj.mtllib", "x\0y")]})
+
+
+def test_a_material_the_mesh_does_not_name_is_refused_naming_the_face():
+    vertices, faces = tetrahedron()
+    with pytest.raises(drm.InvalidInputError) as caught:
+        drm.encode(vertices, faces, attributes={"face_material": np.array([0, 0, 0, 7], np.uint32), "materials": ["a"]})
+    assert "face 3 uses material 7" in str(caught.value)
+
+
+def test_the_progress_answer_is_taken_as_python_takes_truth(torus):
+    with pytest.raises(drm.CancelledError):
+        drm.encode(torus.vertices, torus.faces, progress=lambda f, s: 0)
+    assert drm.encode(torus.vertices, torus.faces, progress=lambda f, s: np.bool_(True))
+
+    class Unsure:
+        def __bool__(self):
+            raise ZeroDivisionError("no answer")
+
+    with pytest.raises(ZeroDivisionError):
+        drm.encode(torus.vertices, torus.faces, progress=lambda f, s: Unsure())

@@ -121,3 +121,24 @@ def test_a_local_cluster_and_the_refusals(tmp_path):
     clash = batch(MESHES[0], str(same_name / os.path.basename(MESHES[0])), "-o", str(tmp_path / "x"))
     assert clash.returncode != 0 and "both be written" in clash.stderr
     assert not (tmp_path / "x" / "drm-manifest.jsonl").exists()
+
+
+def test_a_second_run_with_other_options_encodes_again_and_damaged_lines_are_passed_over(tmp_path):
+    out = tmp_path / "out"
+    first = batch(MESHES[0], "-o", str(out), "--workers", "1")
+    assert first.returncode == 0, first.stdout + first.stderr
+    name = os.path.splitext(os.path.basename(MESHES[0]))[0]
+    other = batch(MESHES[0], "-o", str(out), "--workers", "1", "--bits", "14")
+    assert other.returncode == 0 and "1 to encode" in other.stdout, other.stdout
+    subprocess.run([DRM_TOOL, "encode", MESHES[0], str(tmp_path / "t.drm"), "--bits", "14"], check=True,
+                   stdout=subprocess.DEVNULL)
+    assert read(out / (name + ".drm")) == read(tmp_path / "t.drm")
+    manifest = out / "drm-manifest.jsonl"
+    with open(manifest, "ab") as f:  # damaged lines, the last one cut short
+        f.write(b'[1, 2]\n42\n{"input": ["a"], "output": 1}\n\xff\xfe\n{"input": "/x", "output": "/y", "error": nu')
+    again = batch(MESHES[0], "-o", str(out), "--workers", "1", "--bits", "14")
+    assert again.returncode == 0 and "1 done before" in again.stdout, again.stdout + again.stderr
+    touched = batch(MESHES[0], MESHES[0], "-o", str(out), "--workers", "1")  # 12 bits again; listed twice
+    assert touched.returncode == 0 and "1 file," in touched.stdout and "1 to encode" in touched.stdout, touched.stdout
+    last = manifest.read_bytes().splitlines()[-1]
+    assert json.loads(last)["settings"]["options"].get("bits") is None

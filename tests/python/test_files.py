@@ -198,3 +198,15 @@ def test_encode_file_never_writes_over_its_input(tmp_path):
         drm.encode_file(source, link)
     assert read(source) == read(os.path.join(DATA, "torus.ply"))
     assert math.isfinite(drm.encode_file(source, tmp_path / "out.drm")["stats"]["total_bpv"])
+
+
+def test_file_names_that_are_not_utf8_work(tmp_path):
+    name = os.fsdecode(b"m\xff")
+    source = tmp_path / (name + ".ply")
+    source.write_bytes(read(os.path.join(DATA, "torus.ply")))
+    mesh = drm.load(source)
+    drm.save(tmp_path / (name + ".drm"), mesh)
+    assert len(drm.load(tmp_path / (name + ".drm")).faces) == len(mesh.faces)
+    with pytest.raises(drm.IoError) as caught:
+        drm.load(tmp_path / (name + "-missing.ply"))
+    assert name in str(caught.value)  # the name comes back as os.fsdecode gives it

@@ -111,6 +111,11 @@ TEST(CApi, EncodesAsTheCppApiDoesAndRefusesBadIndices) {
     e = drmcodec_encode(mesh.positions.data(), mesh.vertexCount(), mesh.triangles.data(), mesh.faceCount(), 40);
     EXPECT_EQ(drmcodec_encoded_status(e), DRMCODEC_INVALID_INPUT);
     drmcodec_encoded_free(e);
+    // A count no index can reach is refused before anything is read.
+    e = drmcodec_encode(mesh.positions.data(), SIZE_MAX / 12 - 1, mesh.triangles.data(), mesh.faceCount(), 12);
+    EXPECT_EQ(drmcodec_encoded_status(e), DRMCODEC_INVALID_INPUT);
+    EXPECT_NE(std::string(drmcodec_encoded_error(e)).find("too large"), std::string::npos) << drmcodec_encoded_error(e);
+    drmcodec_encoded_free(e);
 }
 
 TEST(CApi, StatusNamesAreTheErrorKinds) {

@@ -6,7 +6,7 @@
  * function throws or aborts; each result carries a status and, on failure,
  * the message drm::Error gives.
  *
- *     drmcodec_decoded* d = drmcodec_decode(bytes, size);
+ *     drmcodec_decoded* d = drmcodec_decode(bytes, size, 0);
  *     if (drmcodec_decoded_status(d) != DRMCODEC_OK) {
  *         fprintf(stderr, "%s\n", drmcodec_decoded_error(d));
  *     } else {
