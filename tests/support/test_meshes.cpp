@@ -26,6 +26,19 @@ void addFace(drm::Mesh& mesh, uint32_t a, uint32_t b, uint32_t c) {
 
 void addVertex(drm::Mesh& mesh, float x, float y, float z) { mesh.positions.insert(mesh.positions.end(), {x, y, z}); }
 
+drm::Mesh fan(uint32_t rim) {
+    drm::Mesh disc;
+    disc.positions = {0, 0, 0};
+    for (uint32_t k = 0; k < rim; ++k) {
+        const float u = float(k % (rim / 4)) / float(rim / 4), side = float(k / (rim / 4));
+        const float x = side == 0 ? u : side == 1 ? 1 : side == 2 ? 1 - u : 0;
+        const float y = side == 0 ? 0 : side == 1 ? u : side == 2 ? 1 : 1 - u;
+        disc.positions.insert(disc.positions.end(), {x - 0.5f, y - 0.5f, 0.f});
+    }
+    for (uint32_t k = 0; k < rim; ++k) disc.triangles.insert(disc.triangles.end(), {0, 1 + k, 1 + (k + 1) % rim});
+    return disc;
+}
+
 drm::Mesh tetrahedron() {
     drm::Mesh m;
     addVertex(m, 0, 0, 0);

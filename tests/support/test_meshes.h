@@ -16,6 +16,9 @@ namespace drm_test {
 
 // Four faces, outward oriented.
 drm::Mesh tetrahedron();
+// A flat square disc fanned around its centre: one vertex of `rim` faces
+// (rim a multiple of 4), the hub the topological coder takes alone.
+drm::Mesh fan(uint32_t rim);
 
 // An icosahedron with each face split into four, `subdivisions` times,
 // projected onto the unit sphere: closed, 10 * 4^s + 2 vertices.

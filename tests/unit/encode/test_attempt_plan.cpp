@@ -15,20 +15,6 @@
 namespace drm {
 namespace {
 
-// A disc fanned around its centre: one vertex of `rim` faces.
-Mesh fan(uint32_t rim) {
-    Mesh disc;
-    disc.positions = {0, 0, 0};
-    for (uint32_t k = 0; k < rim; ++k) {
-        const float u = float(k % (rim / 4)) / float(rim / 4), side = float(k / (rim / 4));
-        const float x = side == 0 ? u : side == 1 ? 1 : side == 2 ? 1 - u : 0;
-        const float y = side == 0 ? 0 : side == 1 ? u : side == 2 ? 1 : 1 - u;
-        disc.positions.insert(disc.positions.end(), {x - 0.5f, y - 0.5f, 0.f});
-    }
-    for (uint32_t k = 0; k < rim; ++k) disc.triangles.insert(disc.triangles.end(), {0, 1 + k, 1 + (k + 1) % rim});
-    return disc;
-}
-
 TEST(AttemptPlan, AutoChoosesTheCoderUnlessOnlyTheRanksCanDoWhatIsAsked) {
     const Mesh sphere = drm_test::icosphere(2);
     EXPECT_TRUE(planAttempts(sphere, EncodeOptions()).coderChosen);
@@ -59,7 +45,7 @@ TEST(AttemptPlan, AutoChoosesTheCoderUnlessOnlyTheRanksCanDoWhatIsAsked) {
 }
 
 TEST(AttemptPlan, HubsAndTheTopologicalCoderGoAlone) {
-    const Mesh hub = fan(3000);
+    const Mesh hub = drm_test::fan(3000);
     const AttemptPlan plan = planAttempts(hub, EncodeOptions());
     EXPECT_TRUE(plan.coderChosen);
     EXPECT_TRUE(plan.hubs);

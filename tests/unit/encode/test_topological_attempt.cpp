@@ -17,22 +17,9 @@
 namespace drm {
 namespace {
 
-Mesh fan(uint32_t rim) {
-    Mesh disc;
-    disc.positions = {0, 0, 0};
-    for (uint32_t k = 0; k < rim; ++k) {
-        const float u = float(k % (rim / 4)) / float(rim / 4), side = float(k / (rim / 4));
-        const float x = side == 0 ? u : side == 1 ? 1 : side == 2 ? 1 - u : 0;
-        const float y = side == 0 ? 0 : side == 1 ? u : side == 2 ? 1 : 1 - u;
-        disc.positions.insert(disc.positions.end(), {x - 0.5f, y - 0.5f, 0.f});
-    }
-    for (uint32_t k = 0; k < rim; ++k) disc.triangles.insert(disc.triangles.end(), {0, 1 + k, 1 + (k + 1) % rim});
-    return disc;
-}
-
 TEST(TopologicalAttempt, HubsAreVerticesOfVeryManyFaces) {
-    EXPECT_TRUE(hasHubs(fan(3000)));
-    EXPECT_FALSE(hasHubs(fan(40)));
+    EXPECT_TRUE(hasHubs(drm_test::fan(3000)));
+    EXPECT_FALSE(hasHubs(drm_test::fan(40)));
     EXPECT_FALSE(hasHubs(drm_test::icosphere(4)));
     EXPECT_FALSE(hasHubs(drm_test::readTinyPly(std::string(DRM_TEST_DATA_DIR) + "/bunny-lres.ply")));
 }
